@@ -1,0 +1,31 @@
+#pragma once
+// The command line. Parsing is separate from running so it can be tested and so `--help` is the one
+// place the flags are described.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "platform/display.hpp"
+#include "util/result.hpp"
+
+namespace puddle::app {
+
+struct CliOptions {
+    std::string config_path;          // empty: /etc/puddle/puddle.toml when it exists, else built-in defaults
+    std::vector<std::string> sets;    // --set name=value, applied last
+    bool list_params = false;
+    bool print_config = false;
+    platform::DisplayOptions display;
+    std::optional<long> frames;       // stop after N frames (headless default: 180)
+    std::string screenshot;           // write the last frame as PNG
+    std::optional<int> seed;          // shorthand for --set rain.seed=N
+    double fps_cap = 0;               // 0: the display's pace (vblank), headless: as fast as possible
+    std::string log_level = "info";
+};
+
+// Returns the options, or an Error with exit code 2 for bad flags. `--help` and `--version` print and
+// return an Error with exit code 0 (the caller exits with it).
+Result<CliOptions> parse_command_line(int argc, const char* const* argv);
+
+}  // namespace puddle::app

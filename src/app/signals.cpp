@@ -1,0 +1,30 @@
+#include "app/signals.hpp"
+
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+namespace puddle::app {
+
+StopSignals::StopSignals() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &set, &previous_);
+    fd_ = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
+}
+
+StopSignals::~StopSignals() {
+    if (fd_ >= 0) close(fd_);
+    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+}
+
+bool StopSignals::requested() {
+    if (last_) return true;
+    signalfd_siginfo info{};
+    if (fd_ >= 0 && read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info))
+        last_ = static_cast<int>(info.ssi_signo);
+    return last_ != 0;
+}
+
+}  // namespace puddle::app

@@ -1,0 +1,25 @@
+#pragma once
+// SIGINT/SIGTERM as a file descriptor (signalfd), polled by the frame loop: a clean stop needs no
+// global flag and no work inside a signal handler.
+
+#include <csignal>
+
+namespace puddle::app {
+
+class StopSignals {
+public:
+    StopSignals();  // blocks SIGINT and SIGTERM for this thread and opens the signalfd
+    ~StopSignals();
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+    // True once SIGINT or SIGTERM arrived; never blocks.
+    bool requested();
+    int last_signal() const { return last_; }
+
+private:
+    int fd_ = -1;
+    int last_ = 0;
+    sigset_t previous_{};
+};
+
+}  // namespace puddle::app

@@ -1,0 +1,115 @@
+#include "assets/cubemap_loader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <system_error>
+
+#include "assets/image_io.hpp"
+
+namespace puddle::assets {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Looked for in this order; the first one present wins.
+constexpr std::array<const char*, 10> face_extensions{"png", "jpg",  "jpeg", "hdr", "exr",
+                                                      "tif", "tiff", "bmp",  "tga", "webp"};
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+std::string looked_for(const char* face) {
+    std::string list;
+    for (const char* ext : face_extensions) {
+        if (!list.empty()) list += ", ";
+        list += std::string(face) + "." + ext;
+    }
+    return list;
+}
+
+// Names faces in messages briefly when they share a folder ("px.jpg"), in full when they do not.
+std::string short_name(const fs::path& path, const fs::path& beside) {
+    return path.parent_path() == beside.parent_path() ? path.filename().string() : path.string();
+}
+
+Result<CubeImages> load_faces(const std::array<std::string, 6>& paths, std::string source) {
+    CubeImages cube;
+    cube.source = std::move(source);
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        auto image = read_image(paths[i], PixelFormat::RGBA8);
+        if (!image) return image.error();
+        cube.faces[i] = std::move(image).value();
+    }
+
+    // GL requires square faces of one size; say which file breaks that and against what.
+    const Image& first = cube.faces[0];
+    if (first.width != first.height)
+        return make_error(ExitCode::Asset,
+                          "cubemap: {} is {}x{}: all six faces must be square and the same size", paths[0],
+                          first.width, first.height);
+    for (std::size_t i = 1; i < paths.size(); ++i) {
+        const Image& face = cube.faces[i];
+        if (face.width != first.width || face.height != first.height)
+            return make_error(
+                ExitCode::Asset,
+                "cubemap: {} is {}x{} but {} is {}x{}: all six faces must be square and the same size",
+                paths[i], face.width, face.height, short_name(paths[0], paths[i]), first.width, first.height);
+    }
+    return cube;
+}
+
+}  // namespace
+
+Result<CubeImages> load_cubemap_folder(const std::string& folder) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(folder, ec);
+    if (ec) return make_error(ExitCode::Asset, "cubemap: {}: cannot open: {}", folder, ec.message());
+    if (!fs::is_directory(status)) return make_error(ExitCode::Asset, "cubemap: {}: not a folder", folder);
+
+    // Index the folder once by lower-case name, so PX.JPG is found as px.jpg; sorted for a stable pick.
+    std::map<std::string, fs::path> by_name;
+    std::vector<fs::path> entries;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+        entries.push_back(it->path());
+    if (ec) return make_error(ExitCode::Asset, "cubemap: {}: cannot list: {}", folder, ec.message());
+    std::sort(entries.begin(), entries.end());
+    for (const fs::path& entry : entries) by_name.emplace(lower(entry.filename().string()), entry);
+
+    std::array<std::string, 6> paths;
+    for (std::size_t i = 0; i < cube_face_names.size(); ++i) {
+        const char* face = cube_face_names[i];
+        for (const char* ext : face_extensions) {
+            auto found = by_name.find(std::string(face) + "." + ext);
+            if (found != by_name.end()) {
+                paths[i] = found->second.string();
+                break;
+            }
+        }
+        if (paths[i].empty())
+            return make_error(ExitCode::Asset, "cubemap: {}: no face image for '{}' (looked for {})", folder,
+                              face, looked_for(face));
+    }
+    return load_faces(paths, folder);
+}
+
+Result<CubeImages> load_cubemap_faces(const std::array<std::string, 6>& paths) {
+    // Logs show the common folder when there is one, else every path.
+    const fs::path parent = fs::path(paths[0]).parent_path();
+    const bool one_folder = std::all_of(paths.begin(), paths.end(), [&](const std::string& p) {
+        return fs::path(p).parent_path() == parent;
+    });
+    std::string source;
+    if (one_folder) {
+        source = parent.empty() ? std::string(".") : parent.string();
+    } else {
+        for (const std::string& p : paths) source += (source.empty() ? "" : ", ") + p;
+    }
+    return load_faces(paths, source);
+}
+
+}  // namespace puddle::assets

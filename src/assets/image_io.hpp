@@ -1,0 +1,18 @@
+#pragma once
+// Reading and writing images through OpenImageIO. Errors name the path and the reason; the app turns
+// them into exit code 3 at start-up.
+
+#include <string>
+
+#include "assets/image.hpp"
+#include "util/result.hpp"
+
+namespace puddle::assets {
+
+// Any format OpenImageIO reads. RGBA8 output converts to 8 bits (grey and RGB gain channels, alpha 255);
+// RGBA32F output keeps the file's values (linear for HDR formats).
+Result<Image> read_image(const std::string& path, PixelFormat want = PixelFormat::RGBA8);
+// PNG, 8 bits per channel, RGBA.
+Result<void> write_png(const std::string& path, const Image& image);
+
+}  // namespace puddle::assets

@@ -1,0 +1,35 @@
+#pragma once
+// A uniform buffer (std140 data shared by a pass, e.g. the live drops). Made by Device::create_buffer.
+
+#include <cstddef>
+#include <span>
+#include <string>
+
+#include "gpu/handle.hpp"
+
+namespace puddle::gpu {
+
+struct BufferDesc {
+    std::string label;
+    std::size_t size = 0;  // bytes, fixed for the buffer's life
+};
+
+namespace detail {
+void delete_buffer(GLuint id);
+}
+
+class Buffer {
+public:
+    Buffer() = default;
+    GLuint id() const { return id_.get(); }
+    std::size_t size() const { return size_; }
+    // Replaces bytes [offset, offset + data.size()); never reallocates.
+    void write(std::span<const std::byte> data, std::size_t offset = 0);
+
+private:
+    friend class Device;
+    GlHandle<detail::delete_buffer> id_;
+    std::size_t size_ = 0;
+};
+
+}  // namespace puddle::gpu

@@ -1,0 +1,192 @@
+#include "gpu/device.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/gl.hpp"
+#include "gpu/shader_source.hpp"
+
+namespace puddle::gpu {
+
+namespace detail {
+void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+}  // namespace detail
+
+namespace {
+
+GLint gl_wrap(Wrap w) {
+    switch (w) {
+        case Wrap::Clamp: return GL_CLAMP_TO_EDGE;
+        case Wrap::Repeat: return GL_REPEAT;
+        case Wrap::Mirror: return GL_MIRRORED_REPEAT;
+    }
+    return GL_CLAMP_TO_EDGE;
+}
+
+struct ShaderObject {
+    GLuint id = 0;
+    ~ShaderObject() {
+        if (id) glDeleteShader(id);
+    }
+};
+
+std::string info_log(GLuint object, bool program) {
+    GLint length = 0;
+    program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    program ? glGetProgramInfoLog(object, length, nullptr, log.data())
+            : glGetShaderInfoLog(object, length, nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
+    return log;
+}
+
+Result<void> compile(GLuint shader, const std::string& file, const PipelineDesc& desc) {
+    auto assembled = assemble_shader(file, desc.defines);
+    if (!assembled) return make_error(ExitCode::Runtime, "gpu: {}: {}", desc.label, assembled.error().message);
+    const char* text = assembled->source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok)
+        return make_error(ExitCode::Runtime, "gpu: pipeline '{}': {}", desc.label,
+                          map_shader_log(info_log(shader, false), *assembled));
+    return {};
+}
+
+}  // namespace
+
+Device::Device(const DeviceOptions& options) : caps_(probe_capabilities(options.forbid_float_targets)) {
+    if (caps_.debug_labels) labels_.load();
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    empty_vao_ = GlHandle<detail::delete_vertex_array>(vao);
+    glBindVertexArray(vao);
+}
+
+Texture Device::create_texture(const TextureDesc& desc) {
+    Texture t;
+    t.desc_ = desc;
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    t.id_ = GlHandle<detail::delete_texture>(id);
+    const GLenum target = desc.kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    glBindTexture(target, id);
+    glTexStorage2D(target, std::max(1, desc.mip_levels), gl_format(desc.format).internal, desc.width, desc.height);
+    // Integer and unfilterable float textures are incomplete with the default mipmap filter.
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, desc.mip_levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, std::max(0, desc.mip_levels - 1));
+    labels_.label(GL_TEXTURE, id, desc.label);
+    return t;
+}
+
+Sampler Device::create_sampler(const SamplerDesc& desc) {
+    Sampler s;
+    GLuint id = 0;
+    glGenSamplers(1, &id);
+    s.id_ = GlHandle<detail::delete_sampler>(id);
+    GLint min = desc.min == Filter::Linear ? GL_LINEAR : GL_NEAREST;
+    if (desc.mipmaps) min = desc.min == Filter::Linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST;
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, min);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, desc.mag == Filter::Linear ? GL_LINEAR : GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, gl_wrap(desc.wrap));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, gl_wrap(desc.wrap));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_R, gl_wrap(desc.wrap));
+    if (caps_.anisotropic_filtering && desc.anisotropy > 1.0f)
+        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(desc.anisotropy, caps_.max_anisotropy));
+    labels_.label(GL_SAMPLER, id, desc.label);
+    return s;
+}
+
+Buffer Device::create_buffer(const BufferDesc& desc) {
+    Buffer b;
+    GLuint id = 0;
+    glGenBuffers(1, &id);
+    b.id_ = GlHandle<detail::delete_buffer>(id);
+    b.size_ = desc.size;
+    glBindBuffer(GL_UNIFORM_BUFFER, id);
+    glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(desc.size), nullptr, GL_DYNAMIC_DRAW);
+    labels_.label(GL_BUFFER_KHR, id, desc.label);
+    return b;
+}
+
+Result<Pipeline> Device::create_pipeline(const PipelineDesc& desc) {
+    ShaderObject vs{glCreateShader(GL_VERTEX_SHADER)}, fs{glCreateShader(GL_FRAGMENT_SHADER)};
+    if (auto r = compile(vs.id, desc.vertex, desc); !r) return r.error();
+    if (auto r = compile(fs.id, desc.fragment, desc); !r) return r.error();
+    Pipeline p;
+    p.label_ = desc.label;
+    p.program_ = GlHandle<detail::delete_program>(glCreateProgram());
+    const GLuint prog = p.program_.get();
+    glAttachShader(prog, vs.id);
+    glAttachShader(prog, fs.id);
+    glLinkProgram(prog);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) return make_error(ExitCode::Runtime, "gpu: pipeline '{}': link: {}", desc.label, info_log(prog, true));
+    labels_.label(GL_PROGRAM_KHR, prog, desc.label);
+
+    GLint count = 0, max_len = 0;
+    glGetProgramiv(prog, GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(prog, GL_ACTIVE_UNIFORM_MAX_LENGTH, &max_len);
+    std::string name(static_cast<std::size_t>(max_len) + 1, '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLsizei len = 0;
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(prog, static_cast<GLuint>(i), max_len + 1, &len, &size, &type, name.data());
+        std::string n(name.data(), static_cast<std::size_t>(len));
+        if (n.ends_with("[0]")) n.resize(n.size() - 3);
+        const GLint loc = glGetUniformLocation(prog, n.c_str());
+        if (loc < 0) continue;  // members of uniform blocks
+        p.names_.push_back(std::move(n));
+        p.locations_.push_back(loc);
+    }
+    glUseProgram(prog);
+    for (std::size_t unit = 0; unit < desc.textures.size(); ++unit)
+        glUniform1i(p.location(desc.textures[unit]), static_cast<GLint>(unit));
+    for (std::size_t binding = 0; binding < desc.uniform_blocks.size(); ++binding) {
+        const GLuint index = glGetUniformBlockIndex(prog, desc.uniform_blocks[binding].c_str());
+        if (index != GL_INVALID_INDEX) glUniformBlockBinding(prog, index, static_cast<GLuint>(binding));
+    }
+    return p;
+}
+
+RenderPass Device::begin_pass(const RenderPassDesc& desc) { return RenderPass(desc, labels_); }
+
+void Device::read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba) {
+    const int w = target.size.x, h = target.size.y;
+    glBindFramebuffer(GL_FRAMEBUFFER, target.texture ? target.texture->framebuffer() : 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    // GL's row 0 is the bottom of the picture; files start at the top.
+    const std::size_t row = std::size_t(w) * 4;
+    for (int y = 0; y < h / 2; ++y)
+        std::swap_ranges(rgba.begin() + std::ptrdiff_t(y * row), rgba.begin() + std::ptrdiff_t((y + 1) * row),
+                         rgba.begin() + std::ptrdiff_t((h - 1 - y) * row));
+}
+
+std::vector<float> Device::read_texture(const Texture& texture) {
+    const int w = texture.width(), h = texture.height();
+    std::vector<float> out(std::size_t(w) * h * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, texture.framebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    const TextureFormat f = texture.desc().format;
+    if (f == TextureFormat::RG32I) {
+        std::vector<GLint> ints(out.size());
+        glReadPixels(0, 0, w, h, GL_RGBA_INTEGER, GL_INT, ints.data());
+        std::transform(ints.begin(), ints.end(), out.begin(), [](GLint v) { return static_cast<float>(v); });
+    } else if (f == TextureFormat::RGBA8 || f == TextureFormat::SRGB8_A8) {
+        std::vector<std::uint8_t> bytes(out.size());
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        std::transform(bytes.begin(), bytes.end(), out.begin(), [](std::uint8_t v) { return v / 255.0f; });
+    } else {
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out.data());
+    }
+    return out;
+}
+
+void Device::finish() { glFinish(); }
+
+}  // namespace puddle::gpu

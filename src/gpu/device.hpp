@@ -1,0 +1,59 @@
+#pragma once
+// The Device: the one creation path for GPU objects (create_* from labelled descriptors) and the owner
+// of what every pass shares (the empty vertex array for fullscreen triangles, debug label entry points).
+// Made once a context is current (by a display backend); lives as a World resource.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "gpu/buffer.hpp"
+#include "gpu/capabilities.hpp"
+#include "gpu/debug_labels.hpp"
+#include "gpu/frame_target.hpp"
+#include "gpu/handle.hpp"
+#include "gpu/pipeline.hpp"
+#include "gpu/render_pass.hpp"
+#include "gpu/texture.hpp"
+#include "util/result.hpp"
+
+namespace puddle::gpu {
+
+struct DeviceOptions {
+    bool forbid_float_targets = false;  // exercise the fixed-point fallbacks on any GPU
+};
+
+namespace detail {
+void delete_vertex_array(GLuint id);
+}
+
+class Device {
+public:
+    explicit Device(const DeviceOptions& options = {});
+    Device(Device&&) noexcept = default;
+    Device& operator=(Device&&) noexcept = default;
+
+    const Capabilities& caps() const { return caps_; }
+
+    Texture create_texture(const TextureDesc& desc);
+    Sampler create_sampler(const SamplerDesc& desc);
+    Buffer create_buffer(const BufferDesc& desc);
+    // Compile and link errors name the shader file and line: "gpu: wave_step.frag:31: error: ...".
+    Result<Pipeline> create_pipeline(const PipelineDesc& desc);
+    RenderPass begin_pass(const RenderPassDesc& desc);
+
+    // Reads a frame into `rgba` (size.x * size.y * 4 bytes), top row first, as PNG files expect.
+    void read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba);
+    // Reads level 0 of a 2D float or integer texture as 4 floats per texel (integers converted as is),
+    // rows in GL order (row 0 = t 0). For tests and tools, not for the frame loop.
+    std::vector<float> read_texture(const Texture& texture);
+    // Waits until the GPU is done: benchmarks time whole passes with it.
+    void finish();
+
+private:
+    Capabilities caps_;
+    DebugLabels labels_;
+    GlHandle<detail::delete_vertex_array> empty_vao_;
+};
+
+}  // namespace puddle::gpu

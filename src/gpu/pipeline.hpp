@@ -1,0 +1,44 @@
+#pragma once
+// A pipeline: a linked vertex + fragment program plus the bindings it expects, like a WebGPU render
+// pipeline with its bind group layout written into the descriptor. Made by Device::create_pipeline.
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gpu/handle.hpp"
+
+namespace puddle::gpu {
+
+struct PipelineDesc {
+    std::string label;
+    std::string vertex = "fullscreen.vert";  // file in shaders_gles/
+    std::string fragment;                     // file in shaders_gles/
+    std::vector<std::string> defines;         // variants: "METHOD_RAYMARCH", "MAX_DROPS 128"
+    std::vector<std::string> textures;        // sampler uniform names; texture unit = position here
+    std::vector<std::string> uniform_blocks;  // uniform block names; binding = position here
+};
+
+namespace detail {
+void delete_program(GLuint id);
+}
+
+class Pipeline {
+public:
+    Pipeline() = default;
+    GLuint id() const { return program_.get(); }
+    const std::string& label() const { return label_; }
+    // Location of an active uniform, or -1 when the shader does not use it (setting it is then a no-op).
+    GLint location(std::string_view uniform) const;
+    std::span<const std::string> uniform_names() const { return names_; }
+
+private:
+    friend class Device;
+    GlHandle<detail::delete_program> program_;
+    std::string label_;
+    std::vector<std::string> names_;
+    std::vector<GLint> locations_;
+};
+
+}  // namespace puddle::gpu

@@ -1,0 +1,86 @@
+#include "gpu/render_pass.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/buffer.hpp"
+#include "gpu/debug_labels.hpp"
+#include "gpu/gl.hpp"
+#include "gpu/pipeline.hpp"
+#include "gpu/texture.hpp"
+
+namespace puddle::gpu {
+
+RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
+    : store_(desc.store), labels_(&labels) {
+    labels_->push_group(desc.label);
+    is_default_framebuffer_ = desc.target.texture == nullptr;
+    glBindFramebuffer(GL_FRAMEBUFFER, is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer());
+    glViewport(0, 0, desc.target.size.x, desc.target.size.y);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    if (desc.load == LoadOp::Clear) {
+        glClearColor(desc.clear.r, desc.clear.g, desc.clear.b, desc.clear.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else if (desc.load == LoadOp::DontCare) {
+        // Tell a tiler it need not load the old contents: the pass overwrites every pixel.
+        const GLenum attachment = is_default_framebuffer_ ? GL_COLOR : GL_COLOR_ATTACHMENT0;
+        glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);
+    }
+}
+
+RenderPass& RenderPass::set_pipeline(const Pipeline& pipeline) {
+    pipeline_ = &pipeline;
+    glUseProgram(pipeline.id());
+    return *this;
+}
+
+RenderPass& RenderPass::set_texture(int unit, const Texture& texture, const Sampler& sampler) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(texture.desc().kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, texture.id());
+    glBindSampler(static_cast<GLuint>(unit), sampler.id());
+    return *this;
+}
+
+RenderPass& RenderPass::set_uniform_buffer(int binding, const Buffer& buffer) {
+    glBindBufferBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(binding), buffer.id());
+    return *this;
+}
+
+RenderPass& RenderPass::set(std::string_view name, float v) {
+    glUniform1f(pipeline_->location(name), v);
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, int v) {
+    glUniform1i(pipeline_->location(name), v);
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, glm::vec2 v) {
+    glUniform2fv(pipeline_->location(name), 1, glm::value_ptr(v));
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, glm::vec3 v) {
+    glUniform3fv(pipeline_->location(name), 1, glm::value_ptr(v));
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, glm::vec4 v) {
+    glUniform4fv(pipeline_->location(name), 1, glm::value_ptr(v));
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, const glm::mat3& v) {
+    glUniformMatrix3fv(pipeline_->location(name), 1, GL_FALSE, glm::value_ptr(v));
+    return *this;
+}
+
+void RenderPass::draw_fullscreen() { glDrawArrays(GL_TRIANGLES, 0, 3); }
+
+void RenderPass::end() {
+    if (ended_) return;
+    ended_ = true;
+    if (store_ == StoreOp::Discard) {
+        const GLenum attachment = is_default_framebuffer_ ? GL_COLOR : GL_COLOR_ATTACHMENT0;
+        glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);
+    }
+    labels_->pop_group();
+}
+
+}  // namespace puddle::gpu

@@ -1,0 +1,66 @@
+#pragma once
+// One render pass: a colour target with load and store operations, then draws. LoadOp::Clear is
+// glClear; StoreOp::Discard is glInvalidateFramebuffer (cheap on tiled mobile GPUs). Begun by
+// Device::begin_pass; ended by end() or the destructor.
+
+#include <string_view>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "gpu/frame_target.hpp"
+
+namespace puddle::gpu {
+
+class Buffer;
+class DebugLabels;
+class Device;
+class Pipeline;
+class Sampler;
+class Texture;
+
+enum class LoadOp { Clear, Load, DontCare };
+enum class StoreOp { Store, Discard };
+
+struct RenderPassDesc {
+    std::string_view label;
+    FrameTarget target;  // texture, or framebuffer 0 of the current surface
+    LoadOp load = LoadOp::DontCare;
+    glm::vec4 clear{0, 0, 0, 1};
+    StoreOp store = StoreOp::Store;
+};
+
+class RenderPass {
+public:
+    RenderPass(const RenderPass&) = delete;
+    RenderPass& operator=(const RenderPass&) = delete;
+    ~RenderPass() { end(); }
+
+    RenderPass& set_pipeline(const Pipeline& pipeline);
+    RenderPass& set_texture(int unit, const Texture& texture, const Sampler& sampler);
+    RenderPass& set_uniform_buffer(int binding, const Buffer& buffer);
+    // Uniforms by name on the current pipeline; names the shader does not use are ignored.
+    RenderPass& set(std::string_view name, float v);
+    RenderPass& set(std::string_view name, int v);
+    RenderPass& set(std::string_view name, glm::vec2 v);
+    RenderPass& set(std::string_view name, glm::vec3 v);
+    RenderPass& set(std::string_view name, glm::vec4 v);
+    RenderPass& set(std::string_view name, const glm::mat3& v);
+    // One triangle covering the target; the vertex shader makes it from gl_VertexID.
+    void draw_fullscreen();
+    void end();
+
+private:
+    friend class Device;
+    RenderPass(const RenderPassDesc& desc, const DebugLabels& labels);
+    const Pipeline* pipeline_ = nullptr;
+    StoreOp store_ = StoreOp::Store;
+    bool is_default_framebuffer_ = false;
+    bool ended_ = false;
+    const DebugLabels* labels_ = nullptr;
+};
+
+}  // namespace puddle::gpu

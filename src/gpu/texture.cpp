@@ -1,0 +1,72 @@
+#include "gpu/texture.hpp"
+
+#include <cassert>
+
+#include "gpu/gl.hpp"
+
+namespace puddle::gpu {
+
+namespace detail {
+void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
+}  // namespace detail
+
+GlFormat gl_format(TextureFormat f) {
+    switch (f) {
+        case TextureFormat::RGBA8: return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
+        case TextureFormat::SRGB8_A8: return {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
+        case TextureFormat::RG32F: return {GL_RG32F, GL_RG, GL_FLOAT, 2, 4};
+        case TextureFormat::RG32I: return {GL_RG32I, GL_RG_INTEGER, GL_INT, 2, 4};
+        case TextureFormat::RGBA16F: return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, 4};
+        case TextureFormat::RGBA32F: return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, 4};
+    }
+    return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
+}
+
+const char* format_name(TextureFormat f) {
+    switch (f) {
+        case TextureFormat::RGBA8: return "RGBA8";
+        case TextureFormat::SRGB8_A8: return "SRGB8_ALPHA8";
+        case TextureFormat::RG32F: return "RG32F";
+        case TextureFormat::RG32I: return "RG32I";
+        case TextureFormat::RGBA16F: return "RGBA16F";
+        case TextureFormat::RGBA32F: return "RGBA32F";
+    }
+    return "?";
+}
+
+void Texture::upload(std::span<const std::byte> data, int level, int face) {
+    const GlFormat f = gl_format(desc_.format);
+    const int w = std::max(1, desc_.width >> level), h = std::max(1, desc_.height >> level);
+    assert(data.size() >= std::size_t(w) * h * f.channels * f.bytes_per_channel);
+    (void)data;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (desc_.kind == TextureKind::Cube) {
+        glBindTexture(GL_TEXTURE_CUBE_MAP, id());
+        glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), level, 0, 0, w, h, f.format, f.type,
+                        data.data());
+    } else {
+        glBindTexture(GL_TEXTURE_2D, id());
+        glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, f.format, f.type, data.data());
+    }
+}
+
+void Texture::generate_mipmaps() {
+    const GLenum target = desc_.kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    glBindTexture(target, id());
+    glGenerateMipmap(target);
+}
+
+GLuint Texture::framebuffer() const {
+    if (!fbo_) {
+        GLuint fbo = 0;
+        glGenFramebuffers(1, &fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id(), 0);
+        fbo_ = GlHandle<detail::delete_framebuffer>(fbo);
+    }
+    return fbo_.get();
+}
+
+}  // namespace puddle::gpu

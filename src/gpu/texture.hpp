@@ -1,0 +1,91 @@
+#pragma once
+// Textures and samplers: move-only owners made by Device::create_texture / create_sampler.
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "gpu/handle.hpp"
+
+namespace puddle::gpu {
+
+enum class TextureFormat {
+    RGBA8,     // linear 8-bit colour, data
+    SRGB8_A8,  // 8-bit sRGB colour: the sampler decodes to linear
+    RG32F,     // wave field (height, previous height)
+    RG32I,     // wave field, fixed point, where float targets are missing
+    RGBA16F,   // filterable float: surface (height + normal), HDR colour
+    RGBA32F,
+};
+enum class TextureKind { D2, Cube };
+
+struct TextureDesc {
+    std::string label;
+    TextureKind kind = TextureKind::D2;
+    TextureFormat format = TextureFormat::RGBA8;
+    int width = 1, height = 1;
+    int mip_levels = 1;
+};
+
+namespace detail {
+void delete_texture(GLuint id);
+void delete_framebuffer(GLuint id);
+void delete_sampler(GLuint id);
+}  // namespace detail
+
+class Texture {
+public:
+    Texture() = default;
+    const TextureDesc& desc() const { return desc_; }
+    int width() const { return desc_.width; }
+    int height() const { return desc_.height; }
+    GLuint id() const { return id_.get(); }
+    explicit operator bool() const { return static_cast<bool>(id_); }
+
+    // Uploads a whole level (face: 0..5 for cube maps, GL order +X,-X,+Y,-Y,+Z,-Z). The data layout follows
+    // the format: RGBA8/SRGB8_A8 bytes RGBA; float formats floats with the format's channel count
+    // (RGBA16F also takes RGBA floats); RG32I ints. Rows bottom-up in GL terms = top-first image rows
+    // for cube faces (GL's cube convention), first row at t=0 for 2D.
+    void upload(std::span<const std::byte> data, int level = 0, int face = 0);
+    void generate_mipmaps();
+    // The framebuffer that renders into level 0 (made on first use).
+    GLuint framebuffer() const;
+
+private:
+    friend class Device;
+    TextureDesc desc_;
+    GlHandle<detail::delete_texture> id_;
+    mutable GlHandle<detail::delete_framebuffer> fbo_;
+};
+
+enum class Filter { Nearest, Linear };
+enum class Wrap { Clamp, Repeat, Mirror };
+
+struct SamplerDesc {
+    std::string label;
+    Filter min = Filter::Linear, mag = Filter::Linear;
+    bool mipmaps = false;  // trilinear when min is Linear
+    Wrap wrap = Wrap::Clamp;
+    float anisotropy = 1.0f;  // clamped to the device's maximum; ignored without the extension
+};
+
+class Sampler {
+public:
+    Sampler() = default;
+    GLuint id() const { return id_.get(); }
+
+private:
+    friend class Device;
+    GlHandle<detail::delete_sampler> id_;
+};
+
+// GL internal format, pixel format and type for uploads of each TextureFormat.
+struct GlFormat {
+    GLenum internal, format, type;
+    int channels;
+    int bytes_per_channel;
+};
+GlFormat gl_format(TextureFormat f);
+const char* format_name(TextureFormat f);
+
+}  // namespace puddle::gpu

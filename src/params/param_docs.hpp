@@ -1,0 +1,16 @@
+#pragma once
+// The registry as text: `puddle --list-params` and the README's parameter table (a test keeps the README
+// equal to format_params_markdown()).
+
+#include <string>
+
+#include "params/param_store.hpp"
+
+namespace puddle::params {
+
+std::string format_params_list();      // one block per parameter, for a terminal
+std::string format_params_markdown();  // | name | type | default | range | help |
+// `--print-config`: every effective value and where it came from.
+std::string format_effective(const Params& params);
+
+}  // namespace puddle::params

@@ -1,0 +1,67 @@
+#pragma once
+// A display backend: where frames go. One implementation per file (headless_display.cpp,
+// kms_display.cpp, window_display.cpp), chosen at start-up by create_display() in backend_select.cpp.
+// Each backend owns its EGL context; after creation the context is current on the calling thread.
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include <glm/vec2.hpp>
+
+#include "gpu/frame_target.hpp"
+#include "gpu/device.hpp"
+#include "util/result.hpp"
+
+namespace puddle::platform {
+
+enum class BackendKind { Auto, Headless, Kms, Window };
+std::string_view backend_name(BackendKind k);
+
+struct DisplayOptions {
+    BackendKind backend = BackendKind::Auto;
+    glm::ivec2 size{0, 0};       // 0x0: the mode's or window's natural size (headless: 640x360)
+    bool fullscreen = false;     // window backend: ask the window manager for fullscreen
+    std::string card;            // kms: "/dev/dri/card1"; empty = the first card that can modeset
+    std::string connector;       // kms: "HDMI-A-1"; empty = the first connected connector
+    std::string mode;            // kms: "1920x1080" or "1920x1080@60"; empty = the preferred mode
+};
+
+class Display {
+public:
+    virtual ~Display() = default;
+    Display() = default;
+    Display(const Display&) = delete;
+    Display& operator=(const Display&) = delete;
+
+    // Called once the Device exists; a backend that renders offscreen makes its target here.
+    virtual void prepare(gpu::Device& /*device*/) {}
+    virtual BackendKind kind() const = 0;
+    virtual glm::ivec2 size() const = 0;
+    // Where the render system draws this frame: an offscreen texture (headless) or framebuffer 0.
+    virtual gpu::FrameTarget frame_target() const = 0;
+    // Handles window-system or input events; false once the user asked to close the display.
+    virtual bool poll_events() = 0;
+    // Shows the frame drawn into frame_target(): swap buffers, or a vblank-paced page flip.
+    virtual Result<void> present() = 0;
+    // One line for the start-up log: device, connector, mode, size.
+    virtual std::string describe() const = 0;
+};
+
+// One factory per backend file.
+Result<std::unique_ptr<Display>> create_headless_display(const DisplayOptions& options);
+Result<std::unique_ptr<Display>> create_kms_display(const DisplayOptions& options);
+Result<std::unique_ptr<Display>> create_window_display(const DisplayOptions& options);
+
+// kms_display.cpp: a /dev/dri/card* that can modeset and that nobody else holds, or why there is none.
+struct KmsProbe {
+    std::string card;     // empty when none is usable
+    std::string reason;   // why it was chosen or why none was
+};
+KmsProbe probe_kms(const std::string& preferred_card);
+
+// backend_select.cpp: resolves Auto (kms, else window when DISPLAY is set, else headless), logs the
+// choice and the reason in one line, and builds the backend.
+Result<std::unique_ptr<Display>> create_display(const DisplayOptions& options);
+
+}  // namespace puddle::platform

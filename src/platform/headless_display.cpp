@@ -1,0 +1,58 @@
+// Headless backend: EGL on Mesa's surfaceless platform, rendering into an offscreen texture that tests,
+// screenshots and benchmarks read back. No window system, no DRM device needed.
+
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "gpu/gl.hpp"
+#include "gpu/device.hpp"
+#include "platform/display.hpp"
+#include "platform/egl_context.hpp"
+
+namespace puddle::platform {
+
+namespace {
+
+class HeadlessDisplay final : public Display {
+public:
+    HeadlessDisplay(EglContext context, glm::ivec2 size) : context_(std::move(context)), size_(size) {}
+
+    void prepare(gpu::Device& device) override {
+        target_ = device.create_texture(
+            {.label = "headless frame", .format = gpu::TextureFormat::RGBA8, .width = size_.x, .height = size_.y});
+    }
+
+    BackendKind kind() const override { return BackendKind::Headless; }
+    glm::ivec2 size() const override { return size_; }
+    gpu::FrameTarget frame_target() const override { return {&target_, size_}; }
+    bool poll_events() override { return true; }
+    Result<void> present() override {
+        glFlush();  // nothing to show; keep the GPU queue short
+        return {};
+    }
+    std::string describe() const override {
+        return fmt::format("headless: EGL surfaceless ({}) {}x{}", context_.vendor(), size_.x, size_.y);
+    }
+
+private:
+    EglContext context_;
+    glm::ivec2 size_;
+    gpu::Texture target_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<Display>> create_headless_display(const DisplayOptions& options) {
+    auto context = EglContext::create({.platform = EGL_PLATFORM_SURFACELESS_MESA,
+                                       .native_display = EGL_DEFAULT_DISPLAY,
+                                       .window_surface = false,
+                                       .native_visual = 0});
+    if (!context) return make_error(ExitCode::Display, "headless: {}", context.error().message);
+    if (auto r = context->make_current_surfaceless(); !r)
+        return make_error(ExitCode::Display, "headless: {}", r.error().message);
+    const glm::ivec2 size = options.size.x > 0 && options.size.y > 0 ? options.size : glm::ivec2(640, 360);
+    return std::unique_ptr<Display>(std::make_unique<HeadlessDisplay>(std::move(context).value(), size));
+}
+
+}  // namespace puddle::platform

@@ -1,0 +1,57 @@
+#pragma once
+// Fallible start-up returns values, not exceptions: Result<T> holds a T or an Error whose message reads
+// "module: what failed: why" and whose exit code is the one documented in the README.
+
+#include <string>
+#include <utility>
+#include <variant>
+
+#include <fmt/format.h>
+
+namespace puddle {
+
+// Exit codes of the puddle binary (README: "Exit codes").
+enum class ExitCode : int { Ok = 0, Runtime = 1, Config = 2, Asset = 3, Display = 4 };
+
+struct Error {
+    std::string message;
+    ExitCode code = ExitCode::Runtime;
+};
+
+template <class... Args>
+Error make_error(ExitCode code, fmt::format_string<Args...> f, Args&&... args) {
+    return Error{fmt::format(f, std::forward<Args>(args)...), code};
+}
+
+template <class T>
+class [[nodiscard]] Result {
+public:
+    Result(T value) : v_(std::move(value)) {}
+    Result(Error error) : v_(std::move(error)) {}
+    bool ok() const { return v_.index() == 0; }
+    explicit operator bool() const { return ok(); }
+    T& value() & { return std::get<0>(v_); }
+    T&& value() && { return std::get<0>(std::move(v_)); }
+    T& operator*() & { return value(); }
+    T* operator->() { return &value(); }
+    const Error& error() const { return std::get<1>(v_); }
+
+private:
+    std::variant<T, Error> v_;
+};
+
+template <>
+class [[nodiscard]] Result<void> {
+public:
+    Result() = default;
+    Result(Error error) : error_(std::move(error)), ok_(false) {}
+    bool ok() const { return ok_; }
+    explicit operator bool() const { return ok_; }
+    const Error& error() const { return error_; }
+
+private:
+    Error error_;
+    bool ok_ = true;
+};
+
+}  // namespace puddle

@@ -1,0 +1,28 @@
+#include "systems/frame_clock.hpp"
+
+#include <cmath>
+
+namespace puddle::systems {
+
+void frame_clock_system(FrameClock& clock, const params::Params& params) {
+    using params::ParamId;
+    clock.step_seconds = 1.0 / static_cast<double>(params.f(ParamId::wave_steps_per_second));
+    clock.accumulator += clock.frame_dt;
+    // A step is due once the accumulator holds a whole step; the tolerance absorbs the rounding of
+    // adding many small frame times, so 288 frames of 1/144 s are exactly 120 steps of 1/60 s.
+    const double steps = std::floor(clock.accumulator / clock.step_seconds + 1e-6);
+    int due = static_cast<int>(steps);
+    clock.accumulator = std::max(0.0, clock.accumulator - steps * clock.step_seconds);
+    if (due > clock.max_steps_per_frame) {
+        clock.dropped_steps += static_cast<std::uint64_t>(due - clock.max_steps_per_frame);
+        due = clock.max_steps_per_frame;
+    }
+    clock.steps_due = due;
+}
+
+void begin_step_system(FrameClock& clock) {
+    ++clock.step_index;
+    clock.sim_time += clock.step_seconds;
+}
+
+}  // namespace puddle::systems

@@ -1,0 +1,27 @@
+#pragma once
+// The simulation clock: double-precision time and a fixed-step accumulator, so the number of wave steps
+// per simulated second never depends on the display's frame rate.
+
+#include <cstdint>
+
+#include "params/param_store.hpp"
+
+namespace puddle::systems {
+
+struct FrameClock {
+    double frame_dt = 0.0;       // set by the run loop before each frame: real time, or a fixed step headless
+    double accumulator = 0.0;    // time not yet simulated
+    double step_seconds = 1.0 / 60.0;
+    double sim_time = 0.0;       // time of the step being simulated (advanced by begin_step)
+    std::uint64_t step_index = 0;
+    int steps_due = 0;           // simulate-stage runs this frame
+    int max_steps_per_frame = 16;  // a stalled frame drops time rather than spiralling
+    std::uint64_t dropped_steps = 0;
+};
+
+// Input stage: turns frame_dt into steps_due at wave.steps_per_second.
+void frame_clock_system(FrameClock& clock, const params::Params& params);
+// First simulate-stage system: advances sim_time by one step.
+void begin_step_system(FrameClock& clock);
+
+}  // namespace puddle::systems

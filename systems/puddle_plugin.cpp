@@ -1,0 +1,93 @@
+#include "systems/puddle_plugin.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "gpu/device.hpp"
+#include "params/param_store.hpp"
+#include "systems/drop_system.hpp"
+#include "systems/environment_system.hpp"
+#include "systems/frame_clock.hpp"
+#include "systems/render_system.hpp"
+#include "systems/surface_system.hpp"
+#include "systems/wave_system.hpp"
+
+namespace puddle::systems {
+
+using params::ParamId;
+using params::Params;
+
+namespace {
+
+Result<void> build_field_and_surface(ecs::World& world) {
+    auto& device = world.resource<gpu::Device>();
+    auto& field = world.resource<WaveField>();
+    if (auto r = build_wave_field(device, world.resource<Params>(), field); !r) return r;
+    if (auto r = build_surface(device, field, world.resource<Surface>()); !r) return r;
+    spdlog::info("wave: {}x{} field, {} ({} steps/s)", field.resolution, field.resolution,
+                 field.fixed_point ? "fixed-point RG32I (no float render targets)" : "float RG32F",
+                 world.resource<Params>().f(ParamId::wave_steps_per_second));
+    return {};
+}
+
+// Input stage: a new resolution or field format needs new textures; the old field is dropped.
+void wave_rebuild_system(ecs::World& world) {
+    const Params& params = world.resource<Params>();
+    const WaveField& field = world.resource<WaveField>();
+    const bool want_fixed = !(params.b(ParamId::wave_float_field) &&
+                              world.resource<gpu::Device>().caps().float_render_targets);
+    if (field.resolution == params.i(ParamId::wave_resolution) && field.fixed_point == want_fixed) return;
+    if (auto r = build_field_and_surface(world); !r) spdlog::error("{}", r.error().message);
+}
+
+}  // namespace
+
+Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
+    auto& device = world.resource<gpu::Device>();
+    const Params& params = world.resource<Params>();
+
+    auto& env = world.insert_resource<Environment>();
+    if (auto r = load_environment(device, params, env); !r) return r;
+    auto& ground = world.insert_resource<Ground>();
+    if (auto r = load_ground(device, params, ground); !r) return r;
+    spdlog::info("environment: {}; ground: {}", env.source, ground.source);
+
+    world.insert_resource<FrameClock>();
+    world.insert_resource<DropSlots>();
+    world.insert_resource<LiveDrops>();
+    world.storage<Drop>().reserve(max_drops);
+    world.insert_resource<WaveField>();
+    world.insert_resource<Surface>();
+    if (auto r = build_field_and_surface(world); !r) return r;
+    if (auto r = build_puddle_renderer(device, world.resource<Surface>(), world.insert_resource<PuddleRenderer>()); !r)
+        return r;
+
+    schedule.set_step_counter([](ecs::World& w) { return w.resource<FrameClock>().steps_due; });
+
+    schedule.add_system(ecs::Stage::Input, "frame clock", [](ecs::World& w) {
+        frame_clock_system(w.resource<FrameClock>(), w.resource<Params>());
+    });
+    schedule.add_system(ecs::Stage::Input, "wave rebuild", wave_rebuild_system);
+
+    schedule.add_system(ecs::Stage::Simulate, "begin step",
+                        [](ecs::World& w) { begin_step_system(w.resource<FrameClock>()); });
+    schedule.add_system(ecs::Stage::Simulate, "drops", [](ecs::World& w) {
+        drop_system(w.resource<Params>(), w.resource<FrameClock>(), w, w.resource<DropSlots>(),
+                    w.resource<LiveDrops>());
+    });
+    schedule.add_system(ecs::Stage::Simulate, "wave", [](ecs::World& w) {
+        wave_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<LiveDrops>(),
+                    w.resource<WaveField>());
+    });
+
+    schedule.add_system(ecs::Stage::Render, "surface", [](ecs::World& w) {
+        surface_system(w.resource<gpu::Device>(), w.resource<WaveField>(), w.resource<Surface>());
+    });
+    schedule.add_system(ecs::Stage::Render, "puddle", [](ecs::World& w) {
+        render_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Surface>(),
+                      w.resource<Environment>(), w.resource<Ground>(), w.resource<PuddleRenderer>(),
+                      w.resource<RenderTarget>());
+    });
+    return {};
+}
+
+}  // namespace puddle::systems

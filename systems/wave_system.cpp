@@ -1,0 +1,72 @@
+#include "systems/wave_system.hpp"
+
+#include <cstddef>
+#include <span>
+
+#include <fmt/format.h>
+
+namespace puddle::systems {
+
+using params::ParamId;
+
+Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field) {
+    const int n = params.i(ParamId::wave_resolution);
+    const bool fixed_point = !(params.b(ParamId::wave_float_field) && device.caps().float_render_targets);
+    const gpu::TextureFormat format = fixed_point ? gpu::TextureFormat::RG32I : gpu::TextureFormat::RG32F;
+
+    std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
+    if (fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
+    auto pipeline = device.create_pipeline({.label = "wave step",
+                                            .fragment = "wave_step.frag",
+                                            .defines = defines,
+                                            .textures = {"u_field"},
+                                            .uniform_blocks = {"Drops"}});
+    if (!pipeline) return pipeline.error();
+
+    WaveField f;
+    f.resolution = n;
+    f.fixed_point = fixed_point;
+    f.step = std::move(pipeline).value();
+    // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
+    f.nearest = device.create_sampler({.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+    f.drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
+    for (int i = 0; i < 2; ++i) {
+        f.textures[static_cast<std::size_t>(i)] = device.create_texture(
+            {.label = fmt::format("wave field {}", i), .format = format, .width = n, .height = n});
+        // A flat, still surface: clear both steps to zero.
+        device.begin_pass({.label = "wave clear",
+                           .target = {&f.textures[static_cast<std::size_t>(i)], {n, n}},
+                           .load = gpu::LoadOp::Clear,
+                           .clear = {0, 0, 0, 0}});
+    }
+    field = std::move(f);
+    return {};
+}
+
+void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops, WaveField& field) {
+    const auto next = static_cast<std::size_t>(1 - field.current);
+    field.drops.write(std::as_bytes(std::span(drops.drops.data(), static_cast<std::size_t>(drops.count))));
+    auto pass = device.begin_pass({.label = "wave step",
+                                   .target = {&field.textures[next], {field.resolution, field.resolution}},
+                                   .load = gpu::LoadOp::DontCare});
+    pass.set_pipeline(field.step)
+        .set_texture(0, field.newest(), field.nearest)
+        .set_uniform_buffer(0, field.drops)
+        .set("u_drop_count", drops.count)
+        .set("u_wave_damping", params.f(ParamId::wave_damping));
+    pass.draw_fullscreen();
+    field.current = static_cast<int>(next);
+}
+
+std::vector<float> WaveField::read_heights(gpu::Device& device) const {
+    std::vector<float> texels = device.read_texture(newest());
+    std::vector<float> out(static_cast<std::size_t>(resolution) * resolution * 2);
+    const float scale = fixed_point ? 1.0f / fixed_point_scale : 1.0f;
+    for (std::size_t i = 0; i < out.size() / 2; ++i) {
+        out[2 * i] = texels[4 * i] * scale;
+        out[2 * i + 1] = texels[4 * i + 1] * scale;
+    }
+    return out;
+}
+
+}  // namespace puddle::systems

@@ -1,0 +1,39 @@
+#pragma once
+// The wave field (REFERENCE.md §1): a discrete 2D wave equation with damping, one GPU pass per fixed
+// step, ping-ponging between two textures holding (height, previous height). The field has its own
+// resolution. Where the GPU cannot render to float textures, the field is fixed-point RG32I (heights
+// times 65536), which every GLES 3.0 GPU can render to; a test checks both give the same field.
+
+#include <array>
+
+#include "gpu/device.hpp"
+#include "params/param_store.hpp"
+#include "systems/drop_system.hpp"
+#include "util/result.hpp"
+
+namespace puddle::systems {
+
+inline constexpr float fixed_point_scale = 65536.0f;  // RG32I fallback: 1/65536 height units per step
+
+// Resource.
+struct WaveField {
+    std::array<gpu::Texture, 2> textures;
+    int current = 0;  // index of the texture holding the newest step
+    int resolution = 0;
+    bool fixed_point = false;
+    gpu::Pipeline step;
+    gpu::Sampler nearest;
+    gpu::Buffer drops;  // std140 vec4[max_drops]
+
+    const gpu::Texture& newest() const { return textures[static_cast<std::size_t>(current)]; }
+    // Height and previous height of every texel (fixed point converted back to height units), rows by z.
+    std::vector<float> read_heights(gpu::Device& device) const;
+};
+
+// Makes (or remakes, when wave.resolution or wave.float_field changed) a flat field.
+Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field);
+
+// Simulate stage, once per fixed step: inject the live drops and advance the field one step.
+void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops, WaveField& field);
+
+}  // namespace puddle::systems

@@ -1,0 +1,223 @@
+#include "assets/procedural.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "assets/cubemap_loader.hpp"
+
+namespace puddle::assets {
+namespace {
+
+enum Face { PX, NX, PY, NY, PZ, NZ };
+enum class Edge { Left, Right, Top, Bottom };
+
+// The twelve cube edges in GL face orientation: which edge of which face meets which, and whether the
+// texels run in opposite directions along it. Checked against a real cubemap below.
+struct Seam {
+    Face a;
+    Edge ea;
+    Face b;
+    Edge eb;
+    bool reversed;
+};
+constexpr std::array<Seam, 12> kSeams{{
+    {NX, Edge::Right, PZ, Edge::Left, false},
+    {PZ, Edge::Right, PX, Edge::Left, false},
+    {PX, Edge::Right, NZ, Edge::Left, false},
+    {NZ, Edge::Right, NX, Edge::Left, false},
+    {PY, Edge::Bottom, PZ, Edge::Top, false},
+    {PY, Edge::Top, NZ, Edge::Top, true},
+    {PY, Edge::Left, NX, Edge::Top, false},
+    {PY, Edge::Right, PX, Edge::Top, true},
+    {NY, Edge::Top, PZ, Edge::Bottom, false},
+    {NY, Edge::Bottom, NZ, Edge::Bottom, true},
+    {NY, Edge::Left, NX, Edge::Bottom, true},
+    {NY, Edge::Right, PX, Edge::Bottom, false},
+}};
+
+const std::uint8_t* edge_texel(const Image& img, Edge e, int i) {
+    const int n = img.width - 1;
+    switch (e) {
+        case Edge::Left:
+            return img.pixel8(0, i);
+        case Edge::Right:
+            return img.pixel8(n, i);
+        case Edge::Top:
+            return img.pixel8(i, 0);
+        default:
+            return img.pixel8(i, n);
+    }
+}
+
+// Mean absolute difference per channel between the texels on either side of a seam.
+double seam_difference(const CubeImages& cube, const Seam& s, bool flip) {
+    const Image& a = cube.faces[s.a];
+    const Image& b = cube.faces[s.b];
+    const int n = a.width;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const std::uint8_t* pa = edge_texel(a, s.ea, i);
+        const std::uint8_t* pb = edge_texel(b, s.eb, (s.reversed != flip) ? n - 1 - i : i);
+        for (int c = 0; c < 3; ++c) sum += std::abs(int(pa[c]) - int(pb[c]));
+    }
+    return sum / (3.0 * n);
+}
+
+double luma(const std::uint8_t* p) {
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+// Mean colour over a rectangle of one face.
+std::array<double, 3> mean_rgb(const Image& img, int x0, int y0, int x1, int y1) {
+    std::array<double, 3> sum{};
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            for (int c = 0; c < 3; ++c) sum[static_cast<std::size_t>(c)] += img.pixel8(x, y)[c];
+        }
+    }
+    const double count = double(x1 - x0) * double(y1 - y0);
+    for (double& v : sum) v /= count;
+    return sum;
+}
+
+int count_bright(const Image& img, int y0, int y1, int threshold) {
+    int count = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = 0; x < img.width; ++x) {
+            const std::uint8_t* p = img.pixel8(x, y);
+            if (std::max({p[0], p[1], p[2]}) >= threshold) ++count;
+        }
+    }
+    return count;
+}
+
+// Image row of a side face at a given elevation: tc = -tan(elevation), row 0 at tc = -1.
+int side_row(int n, double elevation_deg) {
+    const double tc = -std::tan(elevation_deg * 3.14159265358979 / 180.0);
+    return static_cast<int>((tc + 1.0) * 0.5 * n);
+}
+
+class NightSkyTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { sky_ = new CubeImages(night_sky_cubemap(256, 7)); }
+    static void TearDownTestSuite() {
+        delete sky_;
+        sky_ = nullptr;
+    }
+    static const CubeImages& sky() { return *sky_; }
+
+private:
+    static inline CubeImages* sky_ = nullptr;
+};
+
+TEST_F(NightSkyTest, SameSeedGivesIdenticalBytesAndAnotherSeedDoesNot) {
+    const CubeImages again = night_sky_cubemap(256, 7);
+    const CubeImages other = night_sky_cubemap(256, 8);
+    int differing_faces = 0;
+    for (std::size_t f = 0; f < 6; ++f) {
+        EXPECT_EQ(again.faces[f].data, sky().faces[f].data) << cube_face_names[f];
+        if (other.faces[f].data != sky().faces[f].data) ++differing_faces;
+    }
+    EXPECT_EQ(differing_faces, 6);
+}
+
+TEST_F(NightSkyTest, FaceSizeIsHonoured) {
+    for (int size : {1, 32, 100}) {
+        const CubeImages cube = night_sky_cubemap(size, 3);
+        EXPECT_EQ(cube.source, "procedural night sky");
+        for (const Image& face : cube.faces) {
+            EXPECT_EQ(face.width, size);
+            EXPECT_EQ(face.height, size);
+            EXPECT_EQ(face.format, PixelFormat::RGBA8);
+            EXPECT_EQ(face.data.size(), std::size_t(size) * std::size_t(size) * 4u);
+            EXPECT_EQ(face.pixel8(size - 1, size - 1)[3], 255);
+        }
+    }
+}
+
+TEST_F(NightSkyTest, ZenithIsDarkBlueAndTheHorizonGlowsWarm) {
+    const int n = 256;
+    const auto zenith = mean_rgb(sky().faces[PY], n / 2 - 4, n / 2 - 4, n / 2 + 4, n / 2 + 4);
+    EXPECT_GT(zenith[2], zenith[0]) << "the zenith is blue";
+    EXPECT_LT(zenith[2], 60.0);
+
+    // Just above the tallest buildings (8 degrees), all around.
+    const int row = side_row(n, 10.0);
+    std::array<double, 3> glow{};
+    for (Face f : {PX, NX, PZ, NZ}) {
+        const auto m = mean_rgb(sky().faces[f], 0, row - 2, n, row + 2);
+        for (std::size_t c = 0; c < 3; ++c) glow[c] += m[c] / 4.0;
+    }
+    const std::uint8_t zenith8[3] = {std::uint8_t(zenith[0]), std::uint8_t(zenith[1]),
+                                     std::uint8_t(zenith[2])};
+    const std::uint8_t glow8[3] = {std::uint8_t(glow[0]), std::uint8_t(glow[1]), std::uint8_t(glow[2])};
+    EXPECT_GT(luma(glow8), 2.0 * luma(zenith8)) << "horizon glow is well brighter than the zenith";
+    EXPECT_GT(glow[0], glow[2]) << "the glow is warm (sodium light pollution)";
+
+    // Ground straight down is dark.
+    const auto ground = mean_rgb(sky().faces[NY], n / 2 - 4, n / 2 - 4, n / 2 + 4, n / 2 + 4);
+    for (double v : ground) EXPECT_LT(v, 25.0);
+}
+
+TEST_F(NightSkyTest, HasStarsAboveAndLightsAlongTheSkyline) {
+    const int n = 256;
+    // Stars: bright texels on the top face, which is entirely above 35 degrees.
+    EXPECT_GE(count_bright(sky().faces[PY], 0, n, 150), 40);
+
+    // Windows and street lights: bright texels in the band from the horizon to 9 degrees up.
+    int lights = 0;
+    for (Face f : {PX, NX, PZ, NZ})
+        lights += count_bright(sky().faces[f], side_row(n, 9.0), side_row(n, 0.0) + 1, 150);
+    EXPECT_GE(lights, 150);
+
+    // Nothing bright far below the horizon: the ground is not lit up by mistake.
+    EXPECT_EQ(count_bright(sky().faces[NY], 0, n, 100), 0);
+
+    // And the sky is not washed out: bright texels are features, not the background.
+    int bright_total = 0;
+    for (const Image& face : sky().faces) bright_total += count_bright(face, 0, n, 150);
+    EXPECT_LT(bright_total, 6 * n * n / 50);
+}
+
+TEST_F(NightSkyTest, SeamsAreContinuous) {
+    double right_total = 0.0, wrong_total = 0.0;
+    for (const Seam& s : kSeams) {
+        const double right = seam_difference(sky(), s, false);
+        EXPECT_LT(right, 4.0) << cube_face_names[s.a] << " meets " << cube_face_names[s.b];
+        right_total += right;
+        wrong_total += seam_difference(sky(), s, true);
+    }
+    // The check has teeth: the same edges joined the wrong way round differ clearly more.
+    EXPECT_GT(wrong_total, 2.0 * right_total);
+}
+
+TEST(NightSkySeamTable, MatchesARealCubemap) {
+    const std::string folder = PUDDLE_SHARED_DIR "/assets/cubemap";
+    if (!std::filesystem::exists(folder)) GTEST_SKIP() << "shared cubemap not found at " << folder;
+    auto cube = load_cubemap_folder(folder);
+    ASSERT_TRUE(cube.ok()) << cube.error().message;
+    for (const Seam& s : kSeams) {
+        const double right = seam_difference(*cube, s, false);
+        const double wrong = seam_difference(*cube, s, true);
+        EXPECT_LT(right, 12.0) << cube_face_names[s.a] << " meets " << cube_face_names[s.b];
+        EXPECT_LT(right, wrong) << cube_face_names[s.a] << " meets " << cube_face_names[s.b];
+    }
+}
+
+TEST(NightSkySpeed, Size256IsQuick) {
+    // About 20 ms on a desktop in an optimised build; the bound leaves room for debug builds and busy CI.
+    const auto start = std::chrono::steady_clock::now();
+    const CubeImages cube = night_sky_cubemap(256, 1);
+    const auto ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(cube.faces[0].width, 256);
+    EXPECT_LT(ms, 2000.0);
+    RecordProperty("milliseconds", std::to_string(ms));
+}
+
+}  // namespace
+}  // namespace puddle::assets
