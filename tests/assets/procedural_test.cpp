@@ -101,7 +101,7 @@ int side_row(int n, double elevation_deg) {
     return static_cast<int>((tc + 1.0) * 0.5 * n);
 }
 
-class NightSkyTest : public ::testing::Test {
+class ProceduralNightSky : public ::testing::Test {
 protected:
     static void SetUpTestSuite() { sky_ = new CubeImages(night_sky_cubemap(256, 7)); }
     static void TearDownTestSuite() {
@@ -114,7 +114,7 @@ private:
     static inline CubeImages* sky_ = nullptr;
 };
 
-TEST_F(NightSkyTest, SameSeedGivesIdenticalBytesAndAnotherSeedDoesNot) {
+TEST_F(ProceduralNightSky, SameSeedGivesIdenticalBytesAndAnotherSeedDoesNot) {
     const CubeImages again = night_sky_cubemap(256, 7);
     const CubeImages other = night_sky_cubemap(256, 8);
     int differing_faces = 0;
@@ -125,7 +125,7 @@ TEST_F(NightSkyTest, SameSeedGivesIdenticalBytesAndAnotherSeedDoesNot) {
     EXPECT_EQ(differing_faces, 6);
 }
 
-TEST_F(NightSkyTest, FaceSizeIsHonoured) {
+TEST_F(ProceduralNightSky, FaceSizeIsHonoured) {
     for (int size : {1, 32, 100}) {
         const CubeImages cube = night_sky_cubemap(size, 3);
         EXPECT_EQ(cube.source, "procedural night sky");
@@ -139,7 +139,7 @@ TEST_F(NightSkyTest, FaceSizeIsHonoured) {
     }
 }
 
-TEST_F(NightSkyTest, ZenithIsDarkBlueAndTheHorizonGlowsWarm) {
+TEST_F(ProceduralNightSky, ZenithIsDarkBlueAndTheHorizonGlowsWarm) {
     const int n = 256;
     const auto zenith = mean_rgb(sky().faces[PY], n / 2 - 4, n / 2 - 4, n / 2 + 4, n / 2 + 4);
     EXPECT_GT(zenith[2], zenith[0]) << "the zenith is blue";
@@ -163,7 +163,7 @@ TEST_F(NightSkyTest, ZenithIsDarkBlueAndTheHorizonGlowsWarm) {
     for (double v : ground) EXPECT_LT(v, 25.0);
 }
 
-TEST_F(NightSkyTest, HasStarsAboveAndLightsAlongTheSkyline) {
+TEST_F(ProceduralNightSky, HasStarsAboveAndLightsAlongTheSkyline) {
     const int n = 256;
     // Stars: bright texels on the top face, which is entirely above 35 degrees.
     EXPECT_GE(count_bright(sky().faces[PY], 0, n, 150), 40);
@@ -183,7 +183,7 @@ TEST_F(NightSkyTest, HasStarsAboveAndLightsAlongTheSkyline) {
     EXPECT_LT(bright_total, 6 * n * n / 50);
 }
 
-TEST_F(NightSkyTest, SeamsAreContinuous) {
+TEST_F(ProceduralNightSky, SeamsAreContinuous) {
     double right_total = 0.0, wrong_total = 0.0;
     for (const Seam& s : kSeams) {
         const double right = seam_difference(sky(), s, false);
@@ -195,7 +195,7 @@ TEST_F(NightSkyTest, SeamsAreContinuous) {
     EXPECT_GT(wrong_total, 2.0 * right_total);
 }
 
-TEST(NightSkySeamTable, MatchesARealCubemap) {
+TEST(ProceduralSeamTable, MatchesARealCubemap) {
     const std::string folder = PUDDLE_SHARED_DIR "/assets/cubemap";
     if (!std::filesystem::exists(folder)) GTEST_SKIP() << "shared cubemap not found at " << folder;
     auto cube = load_cubemap_folder(folder);
@@ -208,7 +208,7 @@ TEST(NightSkySeamTable, MatchesARealCubemap) {
     }
 }
 
-TEST(NightSkySpeed, Size256IsQuick) {
+TEST(ProceduralSpeed, Size256IsQuick) {
     // About 20 ms on a desktop in an optimised build; the bound leaves room for debug builds and busy CI.
     const auto start = std::chrono::steady_clock::now();
     const CubeImages cube = night_sky_cubemap(256, 1);
