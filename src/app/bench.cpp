@@ -1,1 +1,291 @@
-int main() { return 0; }
+// puddle-bench: what each pass of a frame costs, headless, next to a floor (the cheapest useful
+// fullscreen pass: sample one frame-sized RGBA8 texture, write the frame). Ratios to the floor travel
+// between machines better than milliseconds do, and raymarch/intersect is the figure DESIGN.md
+// ("Fidelity and speed") asks for.
+//
+// Run:   build/puddle-bench                                    (about a minute on llvmpipe)
+//        build/puddle-bench --benchmark_filter='render|floor'  (any Google Benchmark flag works)
+//        build/puddle-bench --benchmark_min_time=0.5           (quicker; the default here is 2 s)
+// The summary table goes to stdout after the runs; with --benchmark_format=json prefer
+// --benchmark_out=FILE so the table does not mix with the JSON.
+//
+// Every measurement ends with Device::finish() inside the timed region: GL calls only queue work, so
+// without it a pass would look as cheap as its API calls.
+
+#include <benchmark/benchmark.h>
+#include <spdlog/spdlog.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "app/engine.hpp"
+#include "systems/drop_system.hpp"
+#include "systems/frame_clock.hpp"
+#include "systems/render_system.hpp"
+#include "systems/surface_system.hpp"
+#include "systems/wave_system.hpp"
+
+namespace puddle::bench {
+
+using params::ParamId;
+using params::Params;
+
+constexpr std::array<glm::ivec2, 2> sizes{glm::ivec2{1280, 720}, glm::ivec2{1920, 1080}};
+constexpr std::array<const char*, 2> methods{"intersect", "raymarch"};
+
+// The engine for one frame size plus the floor pass's own objects.
+struct Bench {
+    glm::ivec2 size{};
+    std::unique_ptr<app::Engine> engine;
+    gpu::Pipeline floor;
+    gpu::Texture source;
+    gpu::Sampler sampler;
+};
+
+std::unique_ptr<Bench> current;  // one at a time: each engine owns an EGL context that it makes current
+std::string renderer = "(no engine was made)";
+
+std::string size_name(glm::ivec2 s) { return fmt::format("{}x{}", s.x, s.y); }
+
+Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
+    platform::DisplayOptions display;
+    display.backend = platform::BackendKind::Headless;
+    display.size = size;
+    auto engine = app::Engine::create(Params{}, display);
+    if (!engine) return engine.error();
+    auto b = std::make_unique<Bench>();
+    b->size = size;
+    b->engine = std::move(engine).value();
+    gpu::Device& device = b->engine->device();
+    renderer = fmt::format("{} ({})", device.caps().renderer, device.caps().version);
+
+    auto floor = device.create_pipeline(
+        {.label = "bench floor", .vertex = "fullscreen.vert", .fragment = "floor.frag", .textures = {"u_source"}});
+    if (!floor) return floor.error();
+    b->floor = std::move(floor).value();
+    b->source = device.create_texture({.label = "bench source", .width = size.x, .height = size.y});
+    b->source.upload(std::vector<std::byte>(static_cast<std::size_t>(size.x) * size.y * 4, std::byte{128}));
+    // Linear, as a pass reading a video frame or an image would sample it.
+    b->sampler = device.create_sampler({.label = "bench source"});
+
+    // One frame of a whole second (16 steps, the per-frame cap) so the surface has ripples on it and the
+    // render target resource is set; the passes below then measure a settled, rainy puddle.
+    if (auto r = b->engine->frame(1.0); !r) return r.error();
+    return b;
+}
+
+// The engine of `size`, made on first use. Benchmarks are registered size by size, so each size is
+// built once; the old engine goes first so only one EGL context exists at a time.
+Bench* bench_for(glm::ivec2 size, benchmark::State& state) {
+    if (current && current->size == size) return current.get();
+    current.reset();
+    auto b = make_bench(size);
+    if (!b) {
+        state.SkipWithError(b.error().message.c_str());
+        return nullptr;
+    }
+    current = std::move(b).value();
+    return current.get();
+}
+
+// One untimed run first (llvmpipe compiles shader variants on first draw), then the timed loop.
+template <class Work>
+void measure(benchmark::State& state, gpu::Device& device, Work&& work) {
+    work();
+    device.finish();
+    for (auto _ : state) {
+        work();
+        device.finish();
+    }
+}
+
+void set_method(Params& params, const char* method) {
+    (void)params.set(ParamId::render_method, std::string(method), params::ParamSource::CommandLine);
+}
+
+void bench_floor(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    gpu::Device& device = b->engine->device();
+    const gpu::FrameTarget target = b->engine->display().frame_target();
+    measure(state, device, [&] {
+        auto pass = device.begin_pass({.label = "floor", .target = target});
+        pass.set_pipeline(b->floor).set_texture(0, b->source, b->sampler);
+        pass.draw_fullscreen();
+    });
+}
+
+// The simulate stage's drop and wave systems, in the plugin's order (the schedule cannot run one stage
+// alone). The field has its own resolution, so the display size does not matter here.
+void bench_wave_step(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    const Params& params = w.resource<Params>();
+    auto& clock = w.resource<systems::FrameClock>();
+    measure(state, device, [&] {
+        systems::begin_step_system(clock);
+        systems::drop_system(params, clock, w, w.resource<systems::DropSlots>(), w.resource<systems::LiveDrops>());
+        systems::wave_system(device, params, w.resource<systems::LiveDrops>(), w.resource<systems::WaveField>());
+    });
+}
+
+void bench_surface(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    measure(state, device, [&] {
+        systems::surface_system(device, w.resource<systems::WaveField>(), w.resource<systems::Surface>());
+    });
+}
+
+void bench_render(benchmark::State& state, glm::ivec2 size, const char* method) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    set_method(w.resource<Params>(), method);
+    measure(state, device, [&] {
+        systems::render_system(device, w.resource<Params>(), w.resource<systems::Surface>(),
+                               w.resource<systems::Environment>(), w.resource<systems::Ground>(),
+                               w.resource<systems::PuddleRenderer>(), w.resource<systems::RenderTarget>());
+    });
+}
+
+// A whole frame at 60 Hz: exactly one wave step (at the default 60 steps/s), surface, render, present.
+void bench_frame(benchmark::State& state, glm::ivec2 size, const char* method) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    set_method(b->engine->params(), method);
+    std::string error;
+    measure(state, b->engine->device(), [&] {
+        if (auto r = b->engine->frame(1.0 / 60.0); !r) error = r.error().message;
+    });
+    if (!error.empty()) state.SkipWithError(error.c_str());
+}
+
+// Passes everything to the display reporter that the usual flags chose, and keeps ms per benchmark
+// (by registered name; the mean over repetitions) for the summary.
+class Collector : public benchmark::BenchmarkReporter {
+public:
+    explicit Collector(benchmark::BenchmarkReporter* display) : display_(display) {}
+    bool ReportContext(const Context& context) override { return display_->ReportContext(context); }
+    void ReportRuns(const std::vector<Run>& runs) override {
+        for (const Run& run : runs) {
+            if (run.error_occurred || run.run_type != Run::RT_Iteration) continue;
+            auto& [sum, n] = sums_[run.run_name.function_name];
+            sum += run.GetAdjustedRealTime();  // in the benchmark's unit: ms
+            ++n;
+        }
+        display_->ReportRuns(runs);
+    }
+    void Finalize() override { display_->Finalize(); }
+    const double* ms(const std::string& name) const {
+        auto it = means_.find(name);
+        return it == means_.end() ? nullptr : &it->second;
+    }
+    void compute_means() {
+        for (const auto& [name, s] : sums_) means_[name] = s.first / s.second;
+    }
+
+private:
+    benchmark::BenchmarkReporter* display_;
+    std::map<std::string, std::pair<double, int>> sums_;
+    std::map<std::string, double> means_;
+};
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    int threads = 0;
+    for (; std::getline(in, line);) {
+        if (line.starts_with("processor")) ++threads;
+        if (line.starts_with("model name") && model == "unknown CPU") model = line.substr(line.find(':') + 2);
+    }
+    return fmt::format("{} ({} threads)", model, threads);
+}
+
+std::string cell(const double* ms, const double* base) {
+    if (!ms) return fmt::format("{:>20}", "-");
+    return base ? fmt::format("{:>10.2f} {:>8.2f}x", *ms, *ms / *base) : fmt::format("{:>10.2f} {:>9}", *ms, "-");
+}
+
+void print_summary(const Collector& c) {
+    std::printf("\nPuddle passes, ms (x floor of the same size)\n  GL:  %s\n  CPU: %s\n\n%-20s",
+                renderer.c_str(), cpu_model().c_str(), "");
+    for (glm::ivec2 s : sizes) std::printf("%20s", size_name(s).c_str());
+    std::printf("\n");
+    const std::string wave = fmt::format("wave_step/{}", Params{}.i(ParamId::wave_resolution));
+    const std::vector<std::pair<std::string, std::string>> rows{
+        {"floor", "floor"},   {wave + " field", wave},          {"surface", "surface"},
+        {"render/intersect", "render/intersect"}, {"render/raymarch", "render/raymarch"},
+        {"frame/intersect", "frame/intersect"},   {"frame/raymarch", "frame/raymarch"}};
+    for (const auto& [label, key] : rows) {
+        std::printf("%-20s", label.c_str());
+        for (glm::ivec2 s : sizes) {
+            const std::string name = key == wave ? wave : key + "/" + size_name(s);
+            std::printf("%s", cell(c.ms(name), c.ms("floor/" + size_name(s))).c_str());
+        }
+        std::printf("\n");
+    }
+    for (const char* stage : {"render", "frame"}) {
+        std::printf("%-20s", fmt::format("{} rm/int", stage).c_str());
+        for (glm::ivec2 s : sizes) {
+            const double* rm = c.ms(fmt::format("{}/raymarch/{}", stage, size_name(s)));
+            const double* in = c.ms(fmt::format("{}/intersect/{}", stage, size_name(s)));
+            std::printf("%s", rm && in ? fmt::format("{:>19.2f}x", *rm / *in).c_str() : fmt::format("{:>20}", "-").c_str());
+        }
+        std::printf("\n");
+    }
+}
+
+void register_all() {
+    auto add = [](const std::string& name, auto fn) {
+        benchmark::RegisterBenchmark(name.c_str(), fn)->UseRealTime()->Unit(benchmark::kMillisecond);
+    };
+    for (glm::ivec2 s : sizes) {
+        const std::string n = size_name(s);
+        add("floor/" + n, [s](benchmark::State& st) { bench_floor(st, s); });
+        if (s == sizes[0])
+            add(fmt::format("wave_step/{}", Params{}.i(ParamId::wave_resolution)),
+                [s](benchmark::State& st) { bench_wave_step(st, s); });
+        add("surface/" + n, [s](benchmark::State& st) { bench_surface(st, s); });
+        for (const char* m : methods)
+            add(fmt::format("render/{}/{}", m, n), [s, m](benchmark::State& st) { bench_render(st, s, m); });
+        for (const char* m : methods)
+            add(fmt::format("frame/{}/{}", m, n), [s, m](benchmark::State& st) { bench_frame(st, s, m); });
+    }
+}
+
+}  // namespace puddle::bench
+
+int main(int argc, char** argv) {
+    using namespace puddle::bench;
+    spdlog::set_level(spdlog::level::warn);  // engine start-up logs would split the results table
+    // Google Benchmark's 0.5 s default gives one or two iterations of a 1080p pass on llvmpipe; 2 s
+    // steadies the figures and keeps the whole run near a minute. It goes first so a
+    // --benchmark_min_time on the command line overrides it.
+    static char default_min_time[] = "--benchmark_min_time=2";
+    std::vector<char*> args{argv, argv + argc};
+    args.insert(args.begin() + 1, default_min_time);
+    int args_count = static_cast<int>(args.size());
+    benchmark::Initialize(&args_count, args.data());
+    if (benchmark::ReportUnrecognizedArguments(args_count, args.data())) return 1;
+    register_all();
+    Collector collector(benchmark::CreateDefaultDisplayReporter());
+    benchmark::RunSpecifiedBenchmarks(&collector);
+    current.reset();  // GPU objects and the EGL context go before static destruction and driver teardown
+    collector.compute_means();
+    print_summary(collector);
+    benchmark::Shutdown();
+    return 0;
+}

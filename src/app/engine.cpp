@@ -38,9 +38,13 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
 Engine::~Engine() = default;
 
 params::Params& Engine::params() { return world_.resource<params::Params>(); }
-gpu::Device& Engine::device() { return world_.resource<gpu::Device>(); }
+gpu::Device& Engine::device() {
+    display_->make_current();  // callers go on to make GL calls through the device
+    return world_.resource<gpu::Device>();
+}
 
 Result<void> Engine::frame(double dt) {
+    display_->make_current();
     world_.resource<systems::FrameClock>().frame_dt = dt;
     world_.resource<systems::RenderTarget>().target = display_->frame_target();
     schedule_.run_frame(world_);
@@ -48,6 +52,7 @@ Result<void> Engine::frame(double dt) {
 }
 
 assets::Image Engine::read_frame() {
+    display_->make_current();
     const gpu::FrameTarget target = display_->frame_target();
     assets::Image image = assets::Image::make(target.size.x, target.size.y);
     device().read_pixels(target, image.data);

@@ -36,6 +36,8 @@ public:
 
     // Called once the Device exists; a backend that renders offscreen makes its target here.
     virtual void prepare(gpu::Device& /*device*/) {}
+    // Makes this display's EGL context current on the calling thread (a process may hold several, as tests do).
+    virtual void make_current() = 0;
     virtual BackendKind kind() const = 0;
     virtual glm::ivec2 size() const = 0;
     // Where the render system draws this frame: an offscreen texture (headless) or framebuffer 0.

@@ -158,6 +158,12 @@ Result<void> EglContext::make_current_surfaceless() {
     return {};
 }
 
+Result<void> EglContext::make_current() {
+    if (!eglMakeCurrent(display_, surface_, surface_, context_))
+        return make_error(ExitCode::Display, "egl: eglMakeCurrent: {}", egl_error_name(eglGetError()));
+    return {};
+}
+
 bool EglContext::swap_buffers() { return eglSwapBuffers(display_, surface_) == EGL_TRUE; }
 
 bool EglContext::has_extension(std::string_view name) const {

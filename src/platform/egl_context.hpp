@@ -34,6 +34,8 @@ public:
     // Current with no surface at all (headless renders into FBOs).
     Result<void> make_current_surfaceless();
     bool swap_buffers();
+    // Makes this context (and its window surface, if any) current again.
+    Result<void> make_current();
 
     EGLDisplay display() const { return display_; }
     EGLConfig config() const { return config_; }

@@ -23,6 +23,7 @@ public:
             {.label = "headless frame", .format = gpu::TextureFormat::RGBA8, .width = size_.x, .height = size_.y});
     }
 
+    void make_current() override { (void)context_.make_current_surfaceless(); }
     BackendKind kind() const override { return BackendKind::Headless; }
     glm::ivec2 size() const override { return size_; }
     gpu::FrameTarget frame_target() const override { return {&target_, size_}; }

@@ -368,6 +368,7 @@ Result<uint32_t> framebuffer_for(int fd, const std::string& card, gbm_bo* bo) {
 
 class KmsDisplay final : public Display {
 public:
+    void make_current() override { (void)egl_.make_current(); }
     static Result<std::unique_ptr<Display>> create(const DisplayOptions& options);
 
     ~KmsDisplay() override {

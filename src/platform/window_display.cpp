@@ -70,6 +70,7 @@ constexpr glm::ivec2 kDefaultSize{1280, 720};
 
 class WindowDisplay final : public Display {
 public:
+    void make_current() override { (void)egl_.make_current(); }
     static Result<std::unique_ptr<Display>> create(const DisplayOptions& options);
 
     BackendKind kind() const override { return BackendKind::Window; }

@@ -1,1 +1,48 @@
-// (tests to come)
+// Where the GPU cannot render to float textures, the field runs in fixed point (RG32I) and the surface
+// in RGBA8. Forced here on any GPU, it must give the same field and picture within tolerance.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "assets/image_io.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
+#include "systems/surface_system.hpp"
+#include "systems/wave_test_support.hpp"
+
+namespace puddle::test {
+namespace {
+
+TEST(WaveFallback, FixedPointFieldMatchesTheFloatField) {
+    auto params = make_params({"wave.resolution=256", "rain.seed=3"});
+    auto floating = make_engine(params, {160, 90});
+    auto fixed = make_engine(params, {160, 90}, {.forbid_float_targets = true});
+    ASSERT_TRUE(floating && fixed);
+    ASSERT_FALSE(floating->world().resource<systems::WaveField>().fixed_point);
+    ASSERT_TRUE(fixed->world().resource<systems::WaveField>().fixed_point);
+    ASSERT_TRUE(fixed->world().resource<systems::Surface>().unorm);
+
+    const assets::Image img_float = render_frames(*floating, 90);
+    const assets::Image img_fixed = render_frames(*fixed, 90);
+    const Field a = read_field(*floating), b = read_field(*fixed);
+    float peak = 0, worst = 0;
+    for (std::size_t i = 0; i < a.hv.size(); ++i) {
+        peak = std::max(peak, std::abs(a.hv[i]));
+        worst = std::max(worst, std::abs(a.hv[i] - b.hv[i]));
+    }
+    ASSERT_GT(peak, 0.05f);
+    // Rounding to 1/65536 per step accumulates over 90 steps to far below what shows.
+    EXPECT_LT(worst, 1e-3f * peak) << "peak " << peak;
+
+    // The RGBA8 surface quantises slopes; the pictures stay alike.
+    const ImageDiff d = compare_images(img_float, img_fixed, 24);
+    if (d.mean_abs_diff > 2.0) {
+        (void)assets::write_png((output_dir() / "fallback_float.png").string(), img_float);
+        (void)assets::write_png((output_dir() / "fallback_fixed.png").string(), img_fixed);
+    }
+    EXPECT_LT(d.mean_abs_diff, 2.0);
+    EXPECT_LT(d.fraction_over, 0.01);
+}
+
+}  // namespace
+}  // namespace puddle::test
