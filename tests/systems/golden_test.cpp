@@ -1,1 +1,58 @@
-// (tests to come)
+// Golden images: whole pictures for three parameter sets, compared with tests/golden/*.png.
+// Tolerance: mean channel difference at most 1.5 of 255, and at most 1% of pixels off by more than 32
+// (room for another llvmpipe or GPU's rounding, not for a changed look).
+// Regenerate after an intended change of look, then look at the pictures before committing them:
+//   PUDDLE_UPDATE_GOLDEN=1 ctest --test-dir build -R Golden
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "assets/image_io.hpp"
+#include "support/test_support.hpp"
+#include "systems/render_test_support.hpp"
+
+namespace puddle::test {
+namespace {
+
+struct GoldenCase {
+    const char* name;
+    std::initializer_list<std::string> sets;
+};
+
+void check_golden(const char* name, const assets::Image& image) {
+    ASSERT_FALSE(image.empty());
+    const std::string path = std::string(PUDDLE_SOURCE_DIR) + "/tests/golden/" + name + ".png";
+    if (std::getenv("PUDDLE_UPDATE_GOLDEN")) {
+        ASSERT_TRUE(assets::write_png(path, image).ok());
+        GTEST_SKIP() << "wrote " << path;
+    }
+    auto golden = assets::read_image(path);
+    ASSERT_TRUE(golden.ok()) << golden.error().message << " (PUDDLE_UPDATE_GOLDEN=1 makes it)";
+    const ImageDiff d = compare_images(image, *golden, 32);
+    if (d.mean_abs_diff > 1.5 || d.fraction_over > 0.01)
+        (void)assets::write_png((output_dir() / (std::string(name) + ".actual.png")).string(), image);
+    EXPECT_LE(d.mean_abs_diff, 1.5) << name << ": see test-output/" << name << ".actual.png";
+    EXPECT_LE(d.fraction_over, 0.01) << name;
+}
+
+constexpr glm::ivec2 golden_size{480, 270};
+
+TEST(Golden, DefaultNightPuddle) { check_golden("default", render_with({}, 90, golden_size)); }
+
+TEST(Golden, MurkyPondOnCobblesRaymarched) {
+    check_golden("murky_pond", render_with({"ground.checkerboard=false", "water.turbidity=0.08",
+                                            "water.tint=0.05,0.09,0.04", "puddle.depth=8", "render.method=raymarch",
+                                            "rain.drop_count=6", "wave.damping=0.995"},
+                                           90, golden_size));
+}
+
+TEST(Golden, DownpourMirrorTurnedSky) {
+    check_golden("downpour", render_with({"rain.drop_count=100", "rain.intensity=0.2", "rain.speed=2.5",
+                                          "water.reflectivity=1", "environment.rotation=2.5", "look.fog_density=0.02",
+                                          "look.vignette=0.8", "camera.position=25,10,0", "camera.target=-40,2,0"},
+                                         90, golden_size));
+}
+
+}  // namespace
+}  // namespace puddle::test
