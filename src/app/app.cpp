@@ -69,7 +69,7 @@ int run(int argc, const char* const* argv) {
     spdlog::set_level(spdlog::level::from_str(o.log_level));
 
     if (o.list_params) {
-        std::fputs(params::format_params_list().c_str(), stdout);
+        std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(), stdout);
         return 0;
     }
     auto params = load_params(o);

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -107,7 +108,8 @@ void measure(benchmark::State& state, gpu::Device& device, Work&& work) {
 }
 
 void set_method(Params& params, const char* method) {
-    (void)params.set(ParamId::render_method, std::string(method), params::ParamSource::CommandLine);
+    // CommandLine is the highest source, so this always takes.
+    params.set(ParamId::render_method, std::string(method), params::ParamSource::CommandLine);
 }
 
 void bench_floor(benchmark::State& state, glm::ivec2 size) {
@@ -189,18 +191,16 @@ public:
         display_->ReportRuns(runs);
     }
     void Finalize() override { display_->Finalize(); }
-    const double* ms(const std::string& name) const {
-        auto it = means_.find(name);
-        return it == means_.end() ? nullptr : &it->second;
-    }
-    void compute_means() {
-        for (const auto& [name, s] : sums_) means_[name] = s.first / s.second;
+    bool empty() const { return sums_.empty(); }
+    std::optional<double> ms(const std::string& name) const {
+        auto it = sums_.find(name);
+        if (it == sums_.end()) return std::nullopt;
+        return it->second.first / it->second.second;
     }
 
 private:
     benchmark::BenchmarkReporter* display_;
     std::map<std::string, std::pair<double, int>> sums_;
-    std::map<std::string, double> means_;
 };
 
 std::string cpu_model() {
@@ -214,38 +214,41 @@ std::string cpu_model() {
     return fmt::format("{} ({} threads)", model, threads);
 }
 
-std::string cell(const double* ms, const double* base) {
+// Other processes share llvmpipe's CPU cores: a loaded machine inflates every figure.
+std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    in >> one >> five >> fifteen;
+    return fmt::format("{} {} {} (1, 5, 15 min)", one, five, fifteen);
+}
+
+std::string cell(std::optional<double> ms, std::optional<double> base) {
     if (!ms) return fmt::format("{:>20}", "-");
     return base ? fmt::format("{:>10.2f} {:>8.2f}x", *ms, *ms / *base) : fmt::format("{:>10.2f} {:>9}", *ms, "-");
 }
 
 void print_summary(const Collector& c) {
-    std::printf("\nPuddle passes, ms (x floor of the same size)\n  GL:  %s\n  CPU: %s\n\n%-20s",
-                renderer.c_str(), cpu_model().c_str(), "");
+    std::printf("\nPuddle passes, ms (x floor of the same size)\n  GL:   %s\n  CPU:  %s\n  Load: %s\n\n%-20s",
+                renderer.c_str(), cpu_model().c_str(), load_average().c_str(), "");
     for (glm::ivec2 s : sizes) std::printf("%20s", size_name(s).c_str());
-    std::printf("\n");
     const std::string wave = fmt::format("wave_step/{}", Params{}.i(ParamId::wave_resolution));
-    const std::vector<std::pair<std::string, std::string>> rows{
-        {"floor", "floor"},   {wave + " field", wave},          {"surface", "surface"},
-        {"render/intersect", "render/intersect"}, {"render/raymarch", "render/raymarch"},
-        {"frame/intersect", "frame/intersect"},   {"frame/raymarch", "frame/raymarch"}};
-    for (const auto& [label, key] : rows) {
-        std::printf("%-20s", label.c_str());
-        for (glm::ivec2 s : sizes) {
-            const std::string name = key == wave ? wave : key + "/" + size_name(s);
-            std::printf("%s", cell(c.ms(name), c.ms("floor/" + size_name(s))).c_str());
-        }
-        std::printf("\n");
+    for (const std::string& key : {std::string("floor"), wave, std::string("surface"), std::string("render/intersect"),
+                                   std::string("render/raymarch"), std::string("frame/intersect"),
+                                   std::string("frame/raymarch")}) {
+        std::printf("\n%-20s", (key == wave ? key + " field" : key).c_str());
+        for (glm::ivec2 s : sizes)  // the wave step is measured once, and set against each size's floor
+            std::printf("%s", cell(c.ms(key == wave ? wave : key + "/" + size_name(s)),
+                                   c.ms("floor/" + size_name(s))).c_str());
     }
     for (const char* stage : {"render", "frame"}) {
-        std::printf("%-20s", fmt::format("{} rm/int", stage).c_str());
+        std::printf("\n%-20s", fmt::format("{} rm/int", stage).c_str());
         for (glm::ivec2 s : sizes) {
-            const double* rm = c.ms(fmt::format("{}/raymarch/{}", stage, size_name(s)));
-            const double* in = c.ms(fmt::format("{}/intersect/{}", stage, size_name(s)));
-            std::printf("%s", rm && in ? fmt::format("{:>19.2f}x", *rm / *in).c_str() : fmt::format("{:>20}", "-").c_str());
+            const auto rm = c.ms(fmt::format("{}/raymarch/{}", stage, size_name(s)));
+            const auto in = c.ms(fmt::format("{}/intersect/{}", stage, size_name(s)));
+            std::printf("%s", (rm && in ? fmt::format("{:>19.2f}x", *rm / *in) : fmt::format("{:>20}", "-")).c_str());
         }
-        std::printf("\n");
     }
+    std::printf("\n");
 }
 
 void register_all() {
@@ -284,8 +287,7 @@ int main(int argc, char** argv) {
     Collector collector(benchmark::CreateDefaultDisplayReporter());
     benchmark::RunSpecifiedBenchmarks(&collector);
     current.reset();  // GPU objects and the EGL context go before static destruction and driver teardown
-    collector.compute_means();
-    print_summary(collector);
+    if (!collector.empty()) print_summary(collector);  // nothing ran: --benchmark_list_tests, a filter
     benchmark::Shutdown();
     return 0;
 }

@@ -15,6 +15,7 @@ struct CliOptions {
     std::string config_path;          // empty: /etc/puddle/puddle.toml when it exists, else built-in defaults
     std::vector<std::string> sets;    // --set name=value, applied last
     bool list_params = false;
+    bool markdown = false;            // --list-params as the README's Markdown table
     bool print_config = false;
     platform::DisplayOptions display;
     std::optional<long> frames;       // stop after N frames (headless default: 180)

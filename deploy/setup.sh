@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs what Puddle needs to build, run and test, from Debian 12 / Raspberry Pi OS (bookworm)
+# packages. Safe to run again. Uses sudo when not root.
+set -euo pipefail
+
+packages=(
+    build-essential cmake ninja-build pkg-config
+    libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL + GLES 3, Mesa (llvmpipe when there is no GPU)
+    libgbm-dev libdrm-dev                                 # the kms backend
+    libx11-dev                                            # the window backend
+    libglm-dev libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev
+    libopenimageio-dev                                    # images in and out
+    libgpiod-dev libv4l-dev libjpeg-dev                   # knobs and camera
+    libgtest-dev libgmock-dev libbenchmark-dev            # tests and puddle-bench
+    xvfb xauth                                            # the window backend's test runs under Xvfb
+)
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: run as root or install sudo" >&2; exit 1; }
+    sudo="sudo"
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all ${#packages[@]} packages already installed"
+    exit 0
+fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
