@@ -6,7 +6,12 @@ namespace puddle::systems {
 
 void frame_clock_system(FrameClock& clock, const params::Params& params) {
     using params::ParamId;
-    clock.step_seconds = 1.0 / static_cast<double>(params.f(ParamId::wave_steps_per_second));
+    const double step = 1.0 / static_cast<double>(params.f(ParamId::wave_steps_per_second));
+    if (step != clock.step_seconds) {
+        clock.epoch_time = clock.sim_time;
+        clock.epoch_step = clock.step_index;
+        clock.step_seconds = step;
+    }
     clock.accumulator += clock.frame_dt;
     // A step is due once the accumulator holds a whole step; the tolerance absorbs the rounding of
     // adding many small frame times, so 288 frames of 1/144 s are exactly 120 steps of 1/60 s.
@@ -22,7 +27,7 @@ void frame_clock_system(FrameClock& clock, const params::Params& params) {
 
 void begin_step_system(FrameClock& clock) {
     ++clock.step_index;
-    clock.sim_time += clock.step_seconds;
+    clock.sim_time = clock.epoch_time + static_cast<double>(clock.step_index - clock.epoch_step) * clock.step_seconds;
 }
 
 }  // namespace puddle::systems

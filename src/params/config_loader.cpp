@@ -1,5 +1,6 @@
 #include "params/config_loader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -77,28 +78,46 @@ Result<Config> parse_config(std::string_view text, std::string_view path) {
     } catch (const toml::parse_error& e) {
         return make_error(ExitCode::Config, "config: {}:{}: {}", path, e.source().begin.line, e.description());
     }
+    // toml++ visits keys in name order; report the problem nearest the top of the file, as people read it.
+    std::optional<std::pair<int, Error>> first_problem;
+    auto problem = [&](int line, Error e) {
+        if (!first_problem || line < first_problem->first) first_problem.emplace(line, std::move(e));
+    };
     for (auto&& [section_key, section_node] : root) {
         const toml::table* section = section_node.as_table();
         if (!section) {
             const std::string key(section_key.str());
-            return make_error(ExitCode::Config, "config: {}:{}: '{}' must be inside a [section] (did you mean '{}'?)",
-                              path, line_of(section_node), key, nearest_param_name(key));
+            problem(line_of(section_node),
+                    make_error(ExitCode::Config, "config: {}:{}: '{}' must be inside a [section] (did you mean '{}'?)",
+                               path, line_of(section_node), key, nearest_param_name(key)));
+            continue;
         }
         for (auto&& [key, node] : *section) {
             const std::string name = fmt::format("{}.{}", section_key.str(), key.str());
             const ParamDecl* d = find_param(name);
-            if (!d)
-                return make_error(ExitCode::Config, "config: {}:{}: unknown key '{}' (did you mean '{}'?)", path,
-                                  line_of(node), name, nearest_param_name(name));
+            if (!d) {
+                problem(line_of(node), make_error(ExitCode::Config, "config: {}:{}: unknown key '{}' (did you mean '{}'?)",
+                                                  path, line_of(node), name, nearest_param_name(name)));
+                continue;
+            }
             auto value = convert(*d, node);
-            if (!value)
-                return make_error(ExitCode::Config, "config: {}:{}: {} = {} has the wrong type: expected {}", path,
-                                  line_of(node), name, toml_text(node), describe_range(*d));
-            if (auto ok = validate(*d, *value); !ok)
-                return make_error(ExitCode::Config, "config: {}:{}: {}", path, line_of(node), ok.error().message);
+            if (!value) {
+                problem(line_of(node),
+                        make_error(ExitCode::Config, "config: {}:{}: {} = {} has the wrong type: expected {}", path,
+                                   line_of(node), name, toml_text(node), describe_range(*d)));
+                continue;
+            }
+            if (auto ok = validate(*d, *value); !ok) {
+                problem(line_of(node),
+                        make_error(ExitCode::Config, "config: {}:{}: {}", path, line_of(node), ok.error().message));
+                continue;
+            }
             config.entries.push_back({d->id, std::move(*value), line_of(node)});
         }
     }
+    if (first_problem) return first_problem->second;
+    std::sort(config.entries.begin(), config.entries.end(),
+              [](const ConfigEntry& a, const ConfigEntry& b) { return a.line < b.line; });
     return config;
 }
 

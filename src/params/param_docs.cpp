@@ -11,7 +11,7 @@ std::string range_cell(const ParamDecl& d) {
         case ParamKind::Enum: return fmt::format("{}", fmt::join(d.choices, ", "));
         case ParamKind::Path: return "text";
         default: {
-            auto num = [](double v) { return fmt::format("{:g}", v); };
+            auto num = [](double v) { return fmt::format("{}", v); };
             return fmt::format("{} to {}{}", num(d.min), num(d.max), d.unit.empty() ? "" : fmt::format(" {}", d.unit));
         }
     }

@@ -1,1 +1,334 @@
-// (tests to come)
+// Tests for src/params/config_loader.hpp: the TOML config, its error messages, --set, and the shipped
+// config/puddle.toml.
+#include "params/config_loader.hpp"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/test_support.hpp"
+
+namespace puddle::params {
+namespace {
+
+// Passes when `needle` occurs in `text`; a failure prints both.
+::testing::AssertionResult has_text(const std::string& text, std::string_view needle) {
+    if (text.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << needle << "' is not in:\n" << text;
+}
+
+// The error of a config that must not parse.
+Error config_error(std::string_view text, std::string_view path = "file.toml") {
+    auto r = parse_config(text, path);
+    if (r) {
+        ADD_FAILURE() << "parsed, expected an error:\n" << text;
+        return {};
+    }
+    EXPECT_EQ(r.error().code, ExitCode::Config);
+    return r.error();
+}
+
+const ConfigEntry* entry_for(const Config& c, ParamId id) {
+    for (const ConfigEntry& e : c.entries)
+        if (e.id == id) return &e;
+    return nullptr;
+}
+
+TEST(ParseConfig, ValidFileApplies) {
+    const char* text =
+        "# a comment\n"
+        "[rain]\n"
+        "drop_count = 20\n"
+        "intensity = 1.5\n"
+        "speed = 2        # an integer is fine for a float\n"
+        "\n"
+        "[water]\n"
+        "tint = [0.1, 0.2, 0.3]\n"
+        "\n"
+        "[ground]\n"
+        "checkerboard = false\n"
+        "image = \"/srv/paving.png\"\n"
+        "\n"
+        "[render]\n"
+        "method = \"raymarch\"\n";
+    auto r = parse_config(text, "file.toml");
+    ASSERT_TRUE(r) << r.error().message;
+    const Config& c = *r;
+    EXPECT_EQ(c.path, "file.toml");
+    ASSERT_EQ(c.entries.size(), 7u);
+    // Each entry keeps its line number (toml++ tables are sorted by key, so the order is not the file's).
+    const std::pair<ParamId, int> lines[] = {
+        {ParamId::rain_drop_count, 3},     {ParamId::rain_intensity, 4}, {ParamId::rain_speed, 5},
+        {ParamId::water_tint, 8},          {ParamId::ground_checkerboard, 11}, {ParamId::ground_image, 12},
+        {ParamId::render_method, 15},
+    };
+    for (const auto& [id, line] : lines) {
+        const ConfigEntry* e = entry_for(c, id);
+        ASSERT_NE(e, nullptr) << decl(id).name;
+        EXPECT_EQ(e->line, line) << decl(id).name;
+    }
+
+    Params p;
+    const auto before = p.revision();
+    apply_config(c, p);
+    EXPECT_EQ(p.i(ParamId::rain_drop_count), 20);
+    EXPECT_EQ(p.f(ParamId::rain_intensity), 1.5f);
+    EXPECT_EQ(p.f(ParamId::rain_speed), 2.0f);
+    EXPECT_EQ(p.v3(ParamId::water_tint), glm::vec3(0.1f, 0.2f, 0.3f));
+    EXPECT_FALSE(p.b(ParamId::ground_checkerboard));
+    EXPECT_EQ(p.s(ParamId::ground_image), "/srv/paving.png");
+    EXPECT_EQ(p.s(ParamId::render_method), "raymarch");
+    EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::Config);
+    EXPECT_EQ(p.source(ParamId::wave_damping), ParamSource::Default);  // not in the file
+    EXPECT_EQ(p.at(ParamId::wave_damping), decl(ParamId::wave_damping).default_value);
+    EXPECT_GT(p.revision(), before);
+}
+
+TEST(ParseConfig, EmptyFileHasNoEntries) {
+    auto r = parse_config("", "empty.toml");
+    ASSERT_TRUE(r) << r.error().message;
+    EXPECT_TRUE(r->entries.empty());
+    auto comments = parse_config("# nothing here\n\n[rain]\n", "c.toml");
+    ASSERT_TRUE(comments) << comments.error().message;
+    EXPECT_TRUE(comments->entries.empty());
+}
+
+TEST(ParseConfig, ApplyDoesNotOverrideTheCommandLine) {
+    auto r = parse_config("[rain]\ndrop_count = 20\nspeed = 3\n", "file.toml");
+    ASSERT_TRUE(r) << r.error().message;
+    Params p;
+    ASSERT_TRUE(p.set(ParamId::rain_drop_count, 50, ParamSource::CommandLine));
+    apply_config(*r, p);
+    EXPECT_EQ(p.i(ParamId::rain_drop_count), 50);
+    EXPECT_EQ(p.f(ParamId::rain_speed), 3.0f);
+    // Applied as a preset (below the config), a later config wins.
+    Params q;
+    apply_config(*r, q, ParamSource::Preset);
+    EXPECT_EQ(q.source(ParamId::rain_speed), ParamSource::Preset);
+    EXPECT_TRUE(q.set(ParamId::rain_speed, 4.0f, ParamSource::Config));
+}
+
+TEST(ParseConfig, UnknownKeyNamesFileLineKeyAndSuggestion) {
+    const Error e = config_error("[rain]\nintensity = 1\ndrop_cont = 20\n");
+    EXPECT_TRUE(has_text(e.message, "file.toml:3"));
+    EXPECT_TRUE(has_text(e.message, "rain.drop_cont"));
+    EXPECT_TRUE(has_text(e.message, "did you mean 'rain.drop_count'"));
+    EXPECT_EQ(e.message, "config: file.toml:3: unknown key 'rain.drop_cont' (did you mean 'rain.drop_count'?)");
+}
+
+TEST(ParseConfig, UnknownSectionIsAnUnknownKey) {
+    const Error e = config_error("[rian]\ndrop_count = 20\n");
+    EXPECT_EQ(e.message, "config: file.toml:2: unknown key 'rian.drop_count' (did you mean 'rain.drop_count'?)");
+}
+
+TEST(ParseConfig, OutOfRangeNamesFileLineKeyValueAndRange) {
+    const Error e = config_error("[rain]\n\ndrop_count = 500\n");
+    EXPECT_TRUE(has_text(e.message, "file.toml:3"));
+    EXPECT_TRUE(has_text(e.message, "rain.drop_count"));
+    EXPECT_TRUE(has_text(e.message, "500"));
+    EXPECT_TRUE(has_text(e.message, "from 1 to 128"));
+    EXPECT_EQ(e.message,
+              "config: file.toml:3: rain.drop_count = 500 is out of range: allowed an integer from 1 to 128 drops");
+
+    const Error f = config_error("[wave]\ndamping = 1.5\n");
+    EXPECT_EQ(f.message, "config: file.toml:2: wave.damping = 1.5 is out of range: allowed a number from 0.9 to 1");
+
+    const Error c = config_error("[water]\ntint = [0.1, 2.0, 0.3]\n");
+    EXPECT_TRUE(has_text(c.message, "file.toml:2"));
+    EXPECT_TRUE(has_text(c.message, "water.tint = [0.1, 2, 0.3] is out of range"));
+    EXPECT_TRUE(has_text(c.message, "each from 0 to 1 rgb"));
+
+    const Error m = config_error("[render]\nmethod = \"fast\"\n");
+    EXPECT_EQ(m.message, "config: file.toml:2: render.method = \"fast\" is not allowed: one of: intersect, raymarch");
+}
+
+TEST(ParseConfig, HugeIntegerIsOutOfRangeNotWrapped) {
+    const Error e = config_error("[rain]\ndrop_count = 5000000000\n");
+    EXPECT_TRUE(has_text(e.message, "file.toml:2"));
+    EXPECT_TRUE(has_text(e.message, "is out of range"));
+    EXPECT_TRUE(has_text(e.message, "from 1 to 128"));
+}
+
+TEST(ParseConfig, WrongTypeNamesFileLineAndExpectedType) {
+    const Error s = config_error("[rain]\ndrop_count = \"ten\"\n");
+    EXPECT_TRUE(has_text(s.message, "config: file.toml:2: rain.drop_count = "));
+    EXPECT_TRUE(has_text(s.message, "ten"));
+    EXPECT_TRUE(has_text(s.message, "has the wrong type: expected an integer from 1 to 128 drops"));
+
+    const Error f = config_error("[rain]\ndrop_count = 2.5\n");
+    EXPECT_EQ(f.message,
+              "config: file.toml:2: rain.drop_count = 2.5 has the wrong type: expected an integer from 1 to 128 drops");
+
+    const Error b = config_error("[ground]\ncheckerboard = 1\n");
+    EXPECT_EQ(b.message, "config: file.toml:2: ground.checkerboard = 1 has the wrong type: expected true or false");
+
+    const Error c = config_error("[water]\n\n\ntint = [0.1, 0.2]\n");
+    EXPECT_TRUE(has_text(c.message, "config: file.toml:4: water.tint = "));
+    EXPECT_TRUE(has_text(c.message, "has the wrong type: expected three numbers [x, y, z], each from 0 to 1 rgb"));
+
+    const Error v = config_error("[camera]\nposition = [1, \"2\", 3]\n");
+    EXPECT_TRUE(has_text(v.message, "file.toml:2: camera.position = "));
+    EXPECT_TRUE(has_text(v.message, "has the wrong type: expected three numbers"));
+
+    const Error p = config_error("[environment]\nimage = 3\n");
+    EXPECT_EQ(p.message, "config: file.toml:2: environment.image = 3 has the wrong type: expected text (path)");
+}
+
+TEST(ParseConfig, TopLevelKeyMustBeInASection) {
+    const Error e = config_error("drop_count = 20\n");
+    EXPECT_EQ(e.message,
+              "config: file.toml:1: 'drop_count' must be inside a [section] (did you mean 'rain.drop_count'?)");
+}
+
+TEST(ParseConfig, TomlSyntaxErrorNamesFileAndLine) {
+    const Error e = config_error("[rain]\ndrop_count = 20\nintensity = = 1\n", "/etc/puddle/puddle.toml");
+    EXPECT_TRUE(has_text(e.message, "config: /etc/puddle/puddle.toml:3: "));
+    const Error unclosed = config_error("[rain\ndrop_count = 20\n");
+    EXPECT_TRUE(has_text(unclosed.message, "config: file.toml:1: "));
+    const Error duplicate = config_error("[rain]\ndrop_count = 20\ndrop_count = 21\n");
+    EXPECT_TRUE(has_text(duplicate.message, "config: file.toml:3: "));
+}
+
+TEST(ParseConfig, OneErrorIsReportedAndNoEntriesAreReturned) {
+    // Two bad lines: one of them is named (toml++ visits keys sorted, so not necessarily the first line).
+    auto r = parse_config("[rain]\ndrop_count = 20\nspeed = 99\nintensity = -1\n", "file.toml");
+    ASSERT_FALSE(r);
+    const std::string& m = r.error().message;
+    EXPECT_TRUE(has_text(m, "file.toml:3: rain.speed = 99 is out of range") ||
+                has_text(m, "file.toml:4: rain.intensity = -1 is out of range"))
+        << m;
+}
+
+TEST(ParseConfig, SixCubemapPathsJoinWithBar) {
+    auto r = parse_config(
+        "[environment]\n"
+        "image = [\"px.png\", \"nx.png\", \"py.png\", \"ny.png\", \"pz.png\", \"nz.png\"]\n",
+        "file.toml");
+    ASSERT_TRUE(r) << r.error().message;
+    ASSERT_EQ(r->entries.size(), 1u);
+    EXPECT_EQ(r->entries[0].id, ParamId::environment_image);
+    EXPECT_EQ(std::get<std::string>(r->entries[0].value), "px.png|nx.png|py.png|ny.png|pz.png|nz.png");
+
+    const Error mixed = config_error("[environment]\nimage = [\"px.png\", 2]\n");
+    EXPECT_TRUE(has_text(mixed.message, "file.toml:2: environment.image = "));
+    EXPECT_TRUE(has_text(mixed.message, "has the wrong type"));
+    const Error empty = config_error("[environment]\nimage = []\n");
+    EXPECT_TRUE(has_text(empty.message, "has the wrong type"));
+}
+
+TEST(LoadConfigFile, MissingFileNamesPathAndCannotOpen) {
+    auto r = load_config_file("/nonexistent/puddle/none.toml");
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, ExitCode::Config);
+    EXPECT_TRUE(has_text(r.error().message, "/nonexistent/puddle/none.toml"));
+    EXPECT_TRUE(has_text(r.error().message, "cannot open"));
+    EXPECT_EQ(r.error().message, "config: /nonexistent/puddle/none.toml: cannot open: No such file or directory");
+}
+
+TEST(LoadConfigFile, ReadsAFileAndUsesItsPathInMessages) {
+    test::TempDir dir;
+    const std::string good = dir.write("good.toml", "[look]\nvignette = 0.9\n");
+    auto r = load_config_file(good);
+    ASSERT_TRUE(r) << r.error().message;
+    EXPECT_EQ(r->path, good);
+    ASSERT_EQ(r->entries.size(), 1u);
+    EXPECT_EQ(std::get<float>(r->entries[0].value), 0.9f);
+
+    const std::string bad = dir.write("bad.toml", "[look]\nvignette = 9\n");
+    auto b = load_config_file(bad);
+    ASSERT_FALSE(b);
+    EXPECT_EQ(b.error().message,
+              "config: " + bad + ":2: look.vignette = 9 is out of range: allowed a number from 0 to 1.4");
+}
+
+TEST(ParseAssignment, Good) {
+    auto a = parse_assignment("rain.drop_count=20");
+    ASSERT_TRUE(a) << a.error().message;
+    EXPECT_EQ(a->id, ParamId::rain_drop_count);
+    EXPECT_EQ(std::get<int>(a->value), 20);
+
+    auto v = parse_assignment("camera.position=1,2,3");
+    ASSERT_TRUE(v) << v.error().message;
+    EXPECT_EQ(std::get<glm::vec3>(v->value), glm::vec3(1, 2, 3));
+
+    auto b = parse_assignment("ground.checkerboard=off");
+    ASSERT_TRUE(b) << b.error().message;
+    EXPECT_FALSE(std::get<bool>(b->value));
+
+    auto p = parse_assignment("environment.image=/a/b=c");  // only the first '=' splits
+    ASSERT_TRUE(p) << p.error().message;
+    EXPECT_EQ(std::get<std::string>(p->value), "/a/b=c");
+
+    auto e = parse_assignment("ground.image=");
+    ASSERT_TRUE(e) << e.error().message;
+    EXPECT_EQ(std::get<std::string>(e->value), "");
+}
+
+TEST(ParseAssignment, Bad) {
+    auto no_eq = parse_assignment("rain.drop_count");
+    ASSERT_FALSE(no_eq);
+    EXPECT_EQ(no_eq.error().code, ExitCode::Config);
+    EXPECT_EQ(no_eq.error().message, "--set rain.drop_count: expected name=value, e.g. --set rain.drop_count=20");
+
+    auto unknown = parse_assignment("rain.drop_cont=3");
+    ASSERT_FALSE(unknown);
+    EXPECT_EQ(unknown.error().code, ExitCode::Config);
+    EXPECT_EQ(unknown.error().message,
+              "--set rain.drop_cont=3: unknown parameter 'rain.drop_cont' (did you mean 'rain.drop_count'?)");
+
+    auto range = parse_assignment("rain.drop_count=500");
+    ASSERT_FALSE(range);
+    EXPECT_EQ(range.error().code, ExitCode::Config);
+    EXPECT_EQ(range.error().message,
+              "--set: rain.drop_count = 500 is out of range: allowed an integer from 1 to 128 drops");
+
+    auto type = parse_assignment("ground.checkerboard=maybe");
+    ASSERT_FALSE(type);
+    EXPECT_EQ(type.error().message, "--set: ground.checkerboard = \"maybe\" is not valid: expected true or false");
+
+    auto empty = parse_assignment("=3");
+    ASSERT_FALSE(empty);
+    EXPECT_TRUE(has_text(empty.error().message, "unknown parameter ''"));
+}
+
+// The shipped, documented config: it parses, every key exists, and it sets every parameter (paths
+// excepted: their default is empty, so they are commented-out examples) to its default value, so the
+// file is a safe starting point and stays in step with params.def.
+TEST(ShippedConfig, ParsesAndSetsEveryParameterToItsDefault) {
+    const std::string path = PUDDLE_SOURCE_DIR "/config/puddle.toml";
+    auto r = load_config_file(path);
+    ASSERT_TRUE(r) << r.error().message;
+    std::map<ParamId, int> seen;
+    for (const ConfigEntry& e : r->entries) {
+        const ParamDecl& d = decl(e.id);
+        ASSERT_NE(find_param(d.name), nullptr);
+        EXPECT_EQ(++seen[e.id], 1) << d.name << " appears twice (line " << e.line << ")";
+        EXPECT_EQ(e.value, d.default_value) << path << ":" << e.line << ": " << d.name << " = "
+                                            << format_value(e.value) << ", default " << format_value(d.default_value);
+    }
+    for (const ParamDecl& d : param_decls()) {
+        if (d.kind == ParamKind::Path) continue;
+        EXPECT_EQ(seen.count(d.id), 1u) << d.name << " is missing from " << path;
+    }
+}
+
+TEST(ShippedConfig, MentionsEveryPathParameterAsAnExample) {
+    std::ifstream in(PUDDLE_SOURCE_DIR "/config/puddle.toml");
+    ASSERT_TRUE(in);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    for (const ParamDecl& d : param_decls()) {
+        if (d.kind != ParamKind::Path) continue;
+        const std::string key(d.name.substr(d.name.find('.') + 1));
+        EXPECT_TRUE(has_text(s, "# " + key + " = ")) << d.name << " has no commented-out example";
+    }
+    EXPECT_TRUE(has_text(s, "--list-params"));
+    EXPECT_TRUE(has_text(s, "--set"));
+}
+
+}  // namespace
+}  // namespace puddle::params

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,6 +48,7 @@ public:
         const std::string fd_arg = std::to_string(pipe_fds[1]);
         const pid_t pid = ::fork();
         if (pid == 0) {
+            ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // a crashing test must not leave the server behind
             ::close(pipe_fds[0]);
             const int null_fd = ::open("/dev/null", O_WRONLY);
             ::dup2(null_fd, STDOUT_FILENO);
