@@ -49,8 +49,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         ->check(CLI::IsMember({"auto", "kms", "window", "headless"}));
     cli.add_option("--size", size, "Render size WIDTHxHEIGHT (headless default 640x360; kms: picks that mode)");
     cli.add_flag("--fullscreen", o.display.fullscreen, "window backend: fill the screen");
-    cli.add_option("--frames,-n", o.frames, "Stop after N frames (headless default: 180, then write a PNG)")
-        ->check(CLI::Range(1L, 1000000000L));
+    cli.add_option("--frames,-n", o.frames, "Stop after N frames (headless default: 180, then write a PNG; 0: run until stopped)")
+        ->check(CLI::Range(0L, 1000000000L));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")->check(CLI::Range(0, 2147483647));
     cli.add_option("--fps-cap", o.fps_cap, "Render at most this many frames per second (fanless boards)")

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 
@@ -168,9 +169,16 @@ void MockGpio::poll(double now) {
         if (n <= 0) break;
         pending_.append(buffer, static_cast<std::size_t>(n));
     }
+    if (now < resume_at_) return;
     std::size_t start = 0;
-    for (std::size_t nl; (nl = pending_.find('\n', start)) != std::string::npos; start = nl + 1) {
+    for (std::size_t nl; (nl = pending_.find('\n', start)) != std::string::npos;) {
         const std::string_view line(pending_.data() + start, nl - start);
+        start = nl + 1;
+        double seconds = 0;
+        if (std::sscanf(std::string(line).c_str(), "wait %lf", &seconds) == 1) {
+            resume_at_ = now + seconds;  // the rest of the script runs after that
+            break;
+        }
         if (!command(line, now) && !line.empty() && line[0] != '#')
             spdlog::warn("gpio: mock script {}: not a command: '{}'", script_, line);
     }

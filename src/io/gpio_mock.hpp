@@ -8,6 +8,7 @@
 //   add gpiochip1 LABEL   plug a chip in (64 lines; LABEL optional)
 //   busy gpiochip0 17     another program holds the line
 //   deny gpiochip0 17     permission denied on the line
+//   wait 0.5              run the rest of the script half a second later
 //   # ...                 a comment
 //
 // There is a chip gpiochip0 (label "mock-gpio") from the start. Line names are GPIO<offset>. A line
@@ -45,6 +46,7 @@ private:
     int fd_ = -1;
     std::string pending_;  // a partial script line
     double last_time_ = 0;
+    double resume_at_ = 0;  // after a `wait`
 };
 
 }  // namespace puddle::io
