@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cerrno>
+#include <filesystem>
 #include <fstream>
 
 #include "io/gpio_mock.hpp"
@@ -207,6 +208,22 @@ TEST(GpioMock, ScriptDrivesLinesAndWaits) {
     auto n = (*line)->read_events(events);
     ASSERT_TRUE(n);
     EXPECT_EQ(*n, 3u);
+}
+
+}  // namespace
+}  // namespace puddle::io
+
+namespace puddle::io {
+namespace {
+
+// The libgpiod backend this build has, on this machine: with no GPIO chip it must fail clearly.
+TEST(GpiodBackend, AMissingChipIsAClearErrorNotACrash) {
+    if (std::filesystem::exists("/dev/gpiochip0")) GTEST_SKIP() << "this machine has a GPIO chip";
+    auto gpio = make_gpiod_backend();
+    auto line = gpio->request({"gpiochip0", "17", true, params::LineBias::PullUp});
+    ASSERT_FALSE(line);
+    EXPECT_NE(line.error().message.find("gpio: gpiochip0 line 17"), std::string::npos) << line.error().message;
+    EXPECT_NE(line.error().message.find("gpiodetect"), std::string::npos) << line.error().message;
 }
 
 }  // namespace
