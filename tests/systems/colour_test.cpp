@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "assets/image_io.hpp"
+#include "systems/environment_system.hpp"
 #include "support/test_support.hpp"
 #include "systems/environment_test_support.hpp"
 #include "systems/render_test_support.hpp"
@@ -81,6 +82,27 @@ TEST(Colour, ExposureDoublesAndHalvesRadianceBeforeToneMapping) {
         EXPECT_NEAR(base, 0.2f, 0.004f) << (fallback ? "rgbm" : "half float");
         EXPECT_NEAR(up / base, 2.0f, 0.05f) << (fallback ? "rgbm" : "half float");
         EXPECT_NEAR(down / base, 0.5f, 0.0125f) << (fallback ? "rgbm" : "half float");
+    }
+}
+
+TEST(Colour, HdrCrossIsLinearInHalfFloatAndInForcedRgbm) {
+    // Six faces uploaded from the CPU (a cross), not made by the panorama pass: same radiance either way.
+    TempDir dir;
+    const std::string cross = (dir / "cross.exr").string();
+    assets::Image img = assets::Image::make(64, 48, assets::PixelFormat::RGBA32F);
+    for (std::size_t i = 0; i < img.data.size() / sizeof(float); ++i) img.pixelf(0, 0)[i] = (i % 4 == 3) ? 1.0f : 0.2f;
+    write_float_image(cross, img);
+    for (bool fallback : {false, true}) {
+        params::Params p = make_params(kSkyOnly);
+        for (std::string s : {"environment.image=" + cross, std::string("look.tonemap=clip")}) {
+            auto e = params::parse_assignment(s);
+            p.set(e->id, e->value, params::ParamSource::CommandLine);
+        }
+        auto engine = make_engine(p, {64, 36}, {.forbid_float_targets = fallback});
+        ASSERT_TRUE(engine);
+        EXPECT_EQ(engine->world().resource<systems::Environment>().rgbm, fallback);
+        EXPECT_NEAR(srgb_to_linear(render_frames(*engine, 2).pixel8(32, 18)[0]), 0.2f, 0.004f)
+            << (fallback ? "rgbm" : "half float");
     }
 }
 
