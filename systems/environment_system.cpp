@@ -1,10 +1,10 @@
 #include "systems/environment_system.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <bit>
 #include <cstddef>
 #include <span>
-
-#include <spdlog/spdlog.h>
 
 #include "assets/environment_images.hpp"
 #include "assets/image_io.hpp"
@@ -18,7 +18,9 @@ using params::ParamId;
 
 namespace {
 
-int mip_count(int size) { return std::bit_width(static_cast<unsigned>(std::max(size, 1))); }
+int mip_count(int size) {
+    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
+}
 
 struct CubeFormat {
     gpu::TextureFormat format;
@@ -76,16 +78,18 @@ Result<void> load_environment(gpu::Device& device, const params::Params& params,
         const int asked = params.i(ParamId::environment_face_size);
         const int max_size = device.caps().max_cube_map_size;
         if (asked > max_size)
-            spdlog::warn("environment.face_size: {} is more than this GPU's largest cube map; using {}", asked,
-                         max_size);
-        const int size = asked > 0 ? std::min(asked, max_size) : auto_face_size(images->panorama.width, max_size);
+            spdlog::warn("environment.face_size: {} is more than this GPU's largest cube map; using {}",
+                         asked, max_size);
+        const int size =
+            asked > 0 ? std::min(asked, max_size) : auto_face_size(images->panorama.width, max_size);
         auto cube = equirect_to_cube(device, images->panorama, size, f.format, f.rgbm);
         if (!cube) return cube.error();
         e.cube = std::move(cube).value();
     }
     e.sampler = device.create_sampler({.label = "environment", .mipmaps = true, .wrap = gpu::Wrap::Clamp});
-    spdlog::info("environment: {} ({}x{} faces, {})", e.source, e.cube.width(), e.cube.height(),
-                 e.rgbm ? "HDR as RGBM8 (no half-float render targets)" : gpu::format_name(e.cube.desc().format));
+    spdlog::info(
+        "environment: {} ({}x{} faces, {})", e.source, e.cube.width(), e.cube.height(),
+        e.rgbm ? "HDR as RGBM8 (no half-float render targets)" : gpu::format_name(e.cube.desc().format));
     e.requested_image = params.s(ParamId::environment_image);
     e.requested_face_size = params.i(ParamId::environment_face_size);
     env = std::move(e);

@@ -1,16 +1,18 @@
 #include "systems/equirect_to_cube.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <span>
 
-#include <spdlog/spdlog.h>
-
 namespace puddle::systems {
 namespace {
 
-int mip_count(int size) { return std::bit_width(static_cast<unsigned>(std::max(size, 1))); }
+int mip_count(int size) {
+    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
+}
 
 }  // namespace
 
@@ -29,16 +31,17 @@ Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& 
     }
     if (panorama != &source)
         spdlog::info("environment: panorama shrunk from {}x{} to {}x{} (the GPU's largest texture is {})",
-                     source.width, source.height, panorama->width, panorama->height, device.caps().max_texture_size);
+                     source.width, source.height, panorama->width, panorama->height,
+                     device.caps().max_texture_size);
 
     const bool hdr = panorama->format == assets::PixelFormat::RGBA32F;
     const int levels = mip_count(panorama->width);
-    gpu::Texture source_texture = device.create_texture({.label = "environment panorama",
-                                                         .format = hdr ? gpu::TextureFormat::RGBA16F
-                                                                       : gpu::TextureFormat::SRGB8_A8,
-                                                         .width = panorama->width,
-                                                         .height = panorama->height,
-                                                         .mip_levels = levels});
+    gpu::Texture source_texture =
+        device.create_texture({.label = "environment panorama",
+                               .format = hdr ? gpu::TextureFormat::RGBA16F : gpu::TextureFormat::SRGB8_A8,
+                               .width = panorama->width,
+                               .height = panorama->height,
+                               .mip_levels = levels});
     source_texture.upload(std::as_bytes(std::span(panorama->data)));
     if (hdr) {
         // Half floats filter everywhere in GLES 3.0, but the GPU makes their mipmaps only where it can

@@ -1,7 +1,7 @@
 #pragma once
 // Turns an equirectangular panorama into a cube map on the GPU, once at load: one pass per face and mip
-// level, each filtering the panorama over its texels' footprint (so RGBM levels are true averages of radiance).
-// The caller picks the cube's format (environment_system.cpp).
+// level, each filtering the panorama over its texels' footprint (so RGBM levels are true averages of
+// radiance). The caller picks the cube's format (environment_system.cpp).
 
 #include "assets/image.hpp"
 #include "gpu/device.hpp"

@@ -13,10 +13,10 @@ struct Cell {
 };
 
 // Per face in GL order (+X, -X, +Y, -Y, +Z, -Z): where it sits in the cross.
-constexpr std::array<Cell, 6> horizontal_cells{{{2, 1, false}, {0, 1, false}, {1, 0, false},
-                                                {1, 2, false}, {1, 1, false}, {3, 1, false}}};
-constexpr std::array<Cell, 6> vertical_cells{{{2, 1, false}, {0, 1, false}, {1, 0, false},
-                                              {1, 2, false}, {1, 1, false}, {1, 3, true}}};
+constexpr std::array<Cell, 6> horizontal_cells{
+    {{2, 1, false}, {0, 1, false}, {1, 0, false}, {1, 2, false}, {1, 1, false}, {3, 1, false}}};
+constexpr std::array<Cell, 6> vertical_cells{
+    {{2, 1, false}, {0, 1, false}, {1, 0, false}, {1, 2, false}, {1, 1, false}, {1, 3, true}}};
 
 bool near_ratio(int width, int height, double ratio) {
     return height > 0 && std::abs(double(width) / double(height) / ratio - 1.0) <= 0.02;
@@ -51,11 +51,12 @@ Result<CubeImages> split_cube_cross(const Image& cross, CrossLayout layout, cons
     const int size = cross.width / columns;
     if (layout == CrossLayout::None || cross.width % columns != 0 || cross.height % rows != 0 ||
         cross.height / rows != size || size == 0)
-        return make_error(ExitCode::Asset,
-                          "environment.image: {} is {}x{}: a {} cube cross must be {} square faces wide and {} high "
-                          "(e.g. {}x{})",
-                          path, cross.width, cross.height, horizontal ? "horizontal" : "vertical", columns, rows,
-                          columns * 256, rows * 256);
+        return make_error(
+            ExitCode::Asset,
+            "environment.image: {} is {}x{}: a {} cube cross must be {} square faces wide and {} high "
+            "(e.g. {}x{})",
+            path, cross.width, cross.height, horizontal ? "horizontal" : "vertical", columns, rows,
+            columns * 256, rows * 256);
     CubeImages cube;
     cube.source = path;
     const auto& cells = horizontal ? horizontal_cells : vertical_cells;

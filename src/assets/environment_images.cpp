@@ -18,10 +18,11 @@ Result<std::array<std::string, 6>> split_six(const std::string& spec) {
     for (std::size_t i = 0; i < 6; ++i) {
         const std::size_t bar = spec.find('|', start);
         if ((i < 5) == (bar == std::string::npos))
-            return make_error(ExitCode::Asset,
-                              "environment.image: expected a folder, one image or six paths (px, nx, py, ny, pz, nz), "
-                              "got '{}'",
-                              spec);
+            return make_error(
+                ExitCode::Asset,
+                "environment.image: expected a folder, one image or six paths (px, nx, py, ny, pz, nz), "
+                "got '{}'",
+                spec);
         paths[i] = spec.substr(start, bar == std::string::npos ? std::string::npos : bar - start);
         start = bar + 1;
     }
@@ -42,10 +43,11 @@ Result<EnvironmentImages> load_single_image(const std::string& path) {
         return env;
     }
     if (w != 2 * h)
-        return make_error(ExitCode::Asset,
-                          "environment.image: {} is {}x{}: expected an equirectangular panorama twice as wide as high "
-                          "(2:1, e.g. 2048x1024), or a cube cross (4:3 or 3:4)",
-                          path, w, h);
+        return make_error(
+            ExitCode::Asset,
+            "environment.image: {} is {}x{}: expected an equirectangular panorama twice as wide as high "
+            "(2:1, e.g. 2048x1024), or a cube cross (4:3 or 3:4)",
+            path, w, h);
     env.panorama = std::move(image).value();
     return env;
 }

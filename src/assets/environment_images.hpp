@@ -17,7 +17,8 @@ struct EnvironmentImages {
     std::string source;               // for logs
 
     bool hdr() const {
-        return faces ? faces->faces[0].format == PixelFormat::RGBA32F : panorama.format == PixelFormat::RGBA32F;
+        return faces ? faces->faces[0].format == PixelFormat::RGBA32F
+                     : panorama.format == PixelFormat::RGBA32F;
     }
 };
 

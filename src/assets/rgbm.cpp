@@ -9,7 +9,9 @@ std::array<std::uint8_t, 4> encode_rgbm(const float* rgb) {
     // The smallest 8-bit scale that holds the brightest channel: the most precision for the colour.
     const float brightest = std::max({rgb[0], rgb[1], rgb[2], 0.0f}) / rgbm_range;
     const float m = std::clamp(std::ceil(brightest * 255.0f), 1.0f, 255.0f) / 255.0f;
-    auto unorm = [](float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    auto unorm = [](float v) {
+        return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    };
     const float scale = 1.0f / (m * rgbm_range);
     return {unorm(rgb[0] * scale), unorm(rgb[1] * scale), unorm(rgb[2] * scale), unorm(m)};
 }

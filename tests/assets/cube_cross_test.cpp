@@ -18,7 +18,8 @@ Image marked_face(std::size_t i) {
     for (int y = 0; y < kFace; ++y)
         for (int x = 0; x < kFace; ++x) {
             std::uint8_t* p = img.pixel8(x, y);
-            p[0] = static_cast<std::uint8_t>(40 * i), p[1] = 100, p[2] = static_cast<std::uint8_t>(250 - 40 * i), p[3] = 255;
+            p[0] = static_cast<std::uint8_t>(40 * i), p[1] = 100,
+            p[2] = static_cast<std::uint8_t>(250 - 40 * i), p[3] = 255;
         }
     img.pixel8(0, 0)[1] = 255;
     return img;
@@ -92,14 +93,16 @@ TEST(CubeCross, SizeThatDoesNotDivideNamesThePathAndTheRule) {
     auto cube = split_cube_cross(cross, CrossLayout::Horizontal, "/sky/cross.png");
     ASSERT_FALSE(cube.ok());
     EXPECT_EQ(cube.error().code, ExitCode::Asset);
-    EXPECT_EQ(cube.error().message,
-              "environment.image: /sky/cross.png is 1022x768: a horizontal cube cross must be 4 square faces wide "
-              "and 3 high (e.g. 1024x768)");
+    EXPECT_EQ(
+        cube.error().message,
+        "environment.image: /sky/cross.png is 1022x768: a horizontal cube cross must be 4 square faces wide "
+        "and 3 high (e.g. 1024x768)");
     auto vertical = split_cube_cross(Image::make(300, 401), CrossLayout::Vertical, "v.png");
     ASSERT_FALSE(vertical.ok());
-    EXPECT_EQ(vertical.error().message,
-              "environment.image: v.png is 300x401: a vertical cube cross must be 3 square faces wide and 4 high "
-              "(e.g. 768x1024)");
+    EXPECT_EQ(
+        vertical.error().message,
+        "environment.image: v.png is 300x401: a vertical cube cross must be 3 square faces wide and 4 high "
+        "(e.g. 768x1024)");
 }
 
 }  // namespace

@@ -25,7 +25,8 @@ void write_float(const std::string& path, const Image& img) {
     // RGB only: Radiance .hdr has no alpha. The image's RGBA rows are read with a 16-byte pixel stride.
     const OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::FLOAT);
     ASSERT_TRUE(out->open(path, spec)) << out->geterror();
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, img.data.data(), 4 * sizeof(float))) << out->geterror();
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, img.data.data(), 4 * sizeof(float)))
+        << out->geterror();
     ASSERT_TRUE(out->close());
 }
 
@@ -92,15 +93,17 @@ TEST(EnvironmentImages, PanoramaThatIsNotTwoToOneNamesPathAndShape) {
     auto env = load_environment_images(path);
     ASSERT_FALSE(env.ok());
     EXPECT_EQ(env.error().code, ExitCode::Asset);
-    EXPECT_EQ(env.error().message,
-              "environment.image: " + path +
-                  " is 300x200: expected an equirectangular panorama twice as wide as high (2:1, e.g. 2048x1024), "
-                  "or a cube cross (4:3 or 3:4)");
+    EXPECT_EQ(
+        env.error().message,
+        "environment.image: " + path +
+            " is 300x200: expected an equirectangular panorama twice as wide as high (2:1, e.g. 2048x1024), "
+            "or a cube cross (4:3 or 3:4)");
 }
 
 TEST(EnvironmentImages, CorruptFileNamesThePath) {
     TempDir dir;
-    const std::string path = dir.write("broken.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 512 +X 1024\n\x02\x02");
+    const std::string path =
+        dir.write("broken.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 512 +X 1024\n\x02\x02");
     auto env = load_environment_images(path);
     ASSERT_FALSE(env.ok());
     EXPECT_EQ(env.error().code, ExitCode::Asset);

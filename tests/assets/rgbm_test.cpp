@@ -11,9 +11,11 @@ TEST(Rgbm, RoundTripKeepsRadianceWithinAPercentOfTheBrightestChannel) {
     for (float v : {0.004f, 0.0123f, 0.2158f, 0.5f, 1.0f, 1.7f, 11.81f, 16.0f}) {
         const float rgb[3] = {v, 0.5f * v, 0.25f * v};
         const auto back = decode_rgbm(encode_rgbm(rgb).data());
-        // 8 bits of colour under the smallest 8-bit scale that holds it: darks lose most, in absolute terms little.
+        // 8 bits of colour under the smallest 8-bit scale that holds it: darks lose most, in absolute terms
+        // little.
         const float tolerance = std::max(0.01f * v, 0.5f * rgbm_range / 255.0f / 255.0f);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(back[c], rgb[c], tolerance) << "value " << v << " channel " << c;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(back[c], rgb[c], tolerance) << "value " << v << " channel " << c;
     }
 }
 

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "assets/image_io.hpp"
-#include "systems/environment_system.hpp"
 #include "support/test_support.hpp"
+#include "systems/environment_system.hpp"
 #include "systems/environment_test_support.hpp"
 #include "systems/render_test_support.hpp"
 
@@ -16,7 +16,7 @@ namespace {
 
 // Looking level from high above the puddle: every pixel is sky; no vignette, so every pixel is the same.
 const std::initializer_list<std::string> kSkyOnly{"camera.position=0,100,0", "camera.target=0,100,-10",
-                                                   "look.vignette=0", "rain.intensity=0"};
+                                                  "look.vignette=0", "rain.intensity=0"};
 
 assets::Image render_sky(const std::string& env, std::initializer_list<std::string> more = {}) {
     params::Params p = make_params(kSkyOnly);
@@ -38,7 +38,8 @@ std::pair<int, int> channel_range(const assets::Image& img) {
     int lo = 255, hi = 0;
     for (int y = 0; y < img.height; ++y)
         for (int x = 0; x < img.width; ++x)
-            for (int c = 0; c < 3; ++c) lo = std::min<int>(lo, img.pixel8(x, y)[c]), hi = std::max<int>(hi, img.pixel8(x, y)[c]);
+            for (int c = 0; c < 3; ++c)
+                lo = std::min<int>(lo, img.pixel8(x, y)[c]), hi = std::max<int>(hi, img.pixel8(x, y)[c]);
     return {lo, hi};
 }
 
@@ -90,7 +91,8 @@ TEST(Colour, HdrCrossIsLinearInHalfFloatAndInForcedRgbm) {
     TempDir dir;
     const std::string cross = (dir / "cross.exr").string();
     assets::Image img = assets::Image::make(64, 48, assets::PixelFormat::RGBA32F);
-    for (std::size_t i = 0; i < img.data.size() / sizeof(float); ++i) img.pixelf(0, 0)[i] = (i % 4 == 3) ? 1.0f : 0.2f;
+    for (std::size_t i = 0; i < img.data.size() / sizeof(float); ++i)
+        img.pixelf(0, 0)[i] = (i % 4 == 3) ? 1.0f : 0.2f;
     write_float_image(cross, img);
     for (bool fallback : {false, true}) {
         params::Params p = make_params(kSkyOnly);
@@ -114,7 +116,8 @@ TEST(Colour, ToneMappingOperatorsFollowTheirFormulas) {
         return img.empty() ? -1 : int(img.pixel8(10, 10)[0]);
     };
     auto srgb = [](double linear) {
-        return int(std::lround(255.0 * (linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055)));
+        return int(std::lround(
+            255.0 * (linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055)));
     };
     EXPECT_EQ(out(one, "clip"), 255);
     EXPECT_NEAR(out(one, "soft"), srgb(0.8 + 0.2 * (1 - std::exp(-1.0))), 1);  // the shoulder past 0.8
@@ -136,7 +139,8 @@ TEST(Colour, HdrLightsStayBrightInTheReflection) {
     ASSERT_TRUE(assets::write_png(ldr, white).ok());
     const auto bright = render_with({"environment.image=" + hdr, "rain.intensity=0"}, 3);
     const auto clipped = render_with({"environment.image=" + ldr, "rain.intensity=0"}, 3);
-    const double hdr_water = mean_luma(bright, 40, 50, 120, 85), ldr_water = mean_luma(clipped, 40, 50, 120, 85);
+    const double hdr_water = mean_luma(bright, 40, 50, 120, 85),
+                 ldr_water = mean_luma(clipped, 40, 50, 120, 85);
     EXPECT_GT(hdr_water, 220.0);
     EXPECT_LT(ldr_water, 190.0);
 }

@@ -24,8 +24,12 @@ using params::ParamId;
 using params::ParamSource;
 
 // HDR colours, one per axis in GL face order (+X, -X, +Y, -Y, +Z, -Z).
-const std::array<glm::vec3, 6> kAxisColours{{{4.0f, 0.1f, 0.1f}, {0.1f, 2.0f, 0.1f}, {0.1f, 0.1f, 8.0f},
-                                              {0.5f, 0.5f, 0.05f}, {0.05f, 1.5f, 1.5f}, {3.0f, 0.05f, 3.0f}}};
+const std::array<glm::vec3, 6> kAxisColours{{{4.0f, 0.1f, 0.1f},
+                                             {0.1f, 2.0f, 0.1f},
+                                             {0.1f, 0.1f, 8.0f},
+                                             {0.5f, 0.5f, 0.05f},
+                                             {0.05f, 1.5f, 1.5f},
+                                             {3.0f, 0.05f, 3.0f}}};
 
 std::size_t dominant_axis(glm::vec3 d) {
     const glm::vec3 a = glm::abs(d);
@@ -38,12 +42,18 @@ std::size_t dominant_axis(glm::vec3 d) {
 glm::vec3 face_direction(int face, float s, float t) {
     const float sc = 2 * s - 1, tc = 2 * t - 1;
     switch (face) {
-        case 0: return {1, -tc, -sc};
-        case 1: return {-1, -tc, sc};
-        case 2: return {sc, 1, tc};
-        case 3: return {sc, -1, -tc};
-        case 4: return {sc, -tc, 1};
-        default: return {-sc, -tc, -1};
+        case 0:
+            return {1, -tc, -sc};
+        case 1:
+            return {-1, -tc, sc};
+        case 2:
+            return {sc, 1, tc};
+        case 3:
+            return {sc, -1, -tc};
+        case 4:
+            return {sc, -tc, 1};
+        default:
+            return {-sc, -tc, -1};
     }
 }
 
@@ -60,7 +70,8 @@ glm::vec3 cube_texel(const std::vector<float>& face, int size, int x, int row, b
 // RGBM shares one scale: each channel is exact to a fraction of the brightest one.
 void expect_near_relative(glm::vec3 got, glm::vec3 want, float tolerance, const std::string& what) {
     const float brightest = std::max({want.r, want.g, want.b});
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], tolerance * brightest) << what << " channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[c], want[c], tolerance * brightest) << what << " channel " << c;
 }
 
 class EquirectToCube : public ::testing::TestWithParam<bool> {};  // true: forced RGBM fallback
@@ -71,7 +82,8 @@ TEST_P(EquirectToCube, SixDirectionsOfSixColoursGiveFaceCentresOfThoseColours) {
     ASSERT_TRUE(engine);
     gpu::Device& device = engine->device();
     ASSERT_EQ(device.caps().half_float_render_targets, !forced_fallback);
-    const assets::Image panorama = panorama_of(256, [](glm::vec3 d) { return kAxisColours[dominant_axis(d)]; });
+    const assets::Image panorama =
+        panorama_of(256, [](glm::vec3 d) { return kAxisColours[dominant_axis(d)]; });
 
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
     auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback);
@@ -99,7 +111,8 @@ TEST_P(EquirectToCube, EveryTexelHoldsThePanoramaInTheDirectionGlSamplesIt) {
         const auto texels = device.read_texture(*cube, face);
         for (int row = 0; row < size; ++row)
             for (int x = 0; x < size; ++x) {
-                const glm::vec3 want = radiance(glm::normalize(face_direction(face, (x + 0.5f) / size, (row + 0.5f) / size)));
+                const glm::vec3 want =
+                    radiance(glm::normalize(face_direction(face, (x + 0.5f) / size, (row + 0.5f) / size)));
                 const glm::vec3 got = cube_texel(texels, size, x, row, forced_fallback);
                 ASSERT_LT(glm::length(got - want), 0.03f)
                     << assets::cube_face_names[std::size_t(face)] << " texel " << x << "," << row;
@@ -108,7 +121,9 @@ TEST_P(EquirectToCube, EveryTexelHoldsThePanoramaInTheDirectionGlSamplesIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(HalfFloatAndRgbm, EquirectToCube, ::testing::Values(false, true),
-                         [](const auto& test_case) { return test_case.param ? "ForcedRgbmFallback" : "HalfFloat"; });
+                         [](const auto& test_case) {
+                             return test_case.param ? "ForcedRgbmFallback" : "HalfFloat";
+                         });
 
 TEST(EnvironmentSystem, FaceSizeIsAQuarterOfThePanoramaUnlessSet) {
     EXPECT_EQ(systems::auto_face_size(1024, 16384), 256);
@@ -122,7 +137,8 @@ TEST(EnvironmentSystem, FaceSizeIsAQuarterOfThePanoramaUnlessSet) {
     ASSERT_TRUE(automatic);
     EXPECT_EQ(automatic->world().resource<systems::Environment>().cube.width(), 32);
     EXPECT_TRUE(automatic->world().resource<systems::Environment>().hdr);
-    auto chosen = make_engine(make_params({"environment.image=" + path, "environment.face_size=20"}), {32, 32});
+    auto chosen =
+        make_engine(make_params({"environment.image=" + path, "environment.face_size=20"}), {32, 32});
     ASSERT_TRUE(chosen);
     EXPECT_EQ(chosen->world().resource<systems::Environment>().cube.width(), 20);
 }
@@ -135,9 +151,11 @@ TEST(EnvironmentSystem, HdrPicksHalfFloatOrForcedRgbmAndLdrStaysSrgb) {
     ASSERT_TRUE(half);
     EXPECT_EQ(half->world().resource<systems::Environment>().cube.desc().format, gpu::TextureFormat::RGBA16F);
     EXPECT_FALSE(half->world().resource<systems::Environment>().rgbm);
-    auto fallback = make_engine(make_params({"environment.image=" + hdr}), {32, 32}, {.forbid_float_targets = true});
+    auto fallback =
+        make_engine(make_params({"environment.image=" + hdr}), {32, 32}, {.forbid_float_targets = true});
     ASSERT_TRUE(fallback);
-    EXPECT_EQ(fallback->world().resource<systems::Environment>().cube.desc().format, gpu::TextureFormat::RGBA8);
+    EXPECT_EQ(fallback->world().resource<systems::Environment>().cube.desc().format,
+              gpu::TextureFormat::RGBA8);
     EXPECT_TRUE(fallback->world().resource<systems::Environment>().rgbm);
     auto ldr = make_engine(make_params({}), {32, 32});
     ASSERT_TRUE(ldr);
@@ -157,8 +175,9 @@ TEST(EnvironmentSystem, ForcedRgbmFallbackShowsTheSameSky) {
     // Filtering between a lit texel and a dark one gives RGBM less than their average (rgbm.hpp), so the
     // lights' edges differ by a few levels: a looser bound than the goldens', and the lights stay white.
     write_float_image(path, city_lights_panorama(1024));
-    const params::Params p = make_params({"environment.image=" + path, "rain.intensity=0", "wave.resolution=128",
-                                          "camera.position=0,14,30", "camera.target=0,9,0"});
+    const params::Params p =
+        make_params({"environment.image=" + path, "rain.intensity=0", "wave.resolution=128",
+                     "camera.position=0,14,30", "camera.target=0,9,0"});
     auto half = make_engine(p, {160, 90});
     auto rgbm = make_engine(p, {160, 90}, {.forbid_float_targets = true});
     ASSERT_TRUE(half && rgbm);
@@ -187,11 +206,13 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     assets::Image red = assets::Image::make(8, 8);
     for (std::size_t i = 0; i < red.data.size(); i += 4) red.data[i] = 255, red.data[i + 3] = 255;
     const std::string cross = (dir / "cross.png").string();
-    ASSERT_TRUE(assets::write_png(cross, [] {
-        assets::Image c = assets::Image::make(32, 24);
-        std::fill(c.data.begin(), c.data.end(), std::uint8_t{200});
-        return c;
-    }()).ok());
+    ASSERT_TRUE(assets::write_png(cross,
+                                  [] {
+                                      assets::Image c = assets::Image::make(32, 24);
+                                      std::fill(c.data.begin(), c.data.end(), std::uint8_t{200});
+                                      return c;
+                                  }())
+                    .ok());
     const std::string ground = (dir / "red.png").string();
     ASSERT_TRUE(assets::write_png(ground, red).ok());
 

@@ -7,10 +7,9 @@
 
 #include <cmath>
 #include <functional>
-#include <string>
-
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <string>
 
 #include "assets/image.hpp"
 
@@ -23,7 +22,8 @@ inline void write_float_image(const std::string& path, const assets::Image& img)
     // RGB only: Radiance .hdr has no alpha. The image's RGBA rows are read with a 16-byte pixel stride.
     const OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::FLOAT);
     ASSERT_TRUE(out->open(path, spec)) << out->geterror();
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, img.data.data(), 4 * sizeof(float))) << out->geterror();
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, img.data.data(), 4 * sizeof(float)))
+        << out->geterror();
     ASSERT_TRUE(out->close());
 }
 
@@ -33,7 +33,8 @@ inline glm::vec3 panorama_direction(int x, int y, int width, int height) {
     const double pi = 3.14159265358979;
     const double lon = ((x + 0.5) / width - 0.5) * 2.0 * pi;
     const double lat = (0.5 - (y + 0.5) / height) * pi;
-    return glm::vec3(float(std::sin(lon) * std::cos(lat)), float(std::sin(lat)), float(-std::cos(lon) * std::cos(lat)));
+    return glm::vec3(float(std::sin(lon) * std::cos(lat)), float(std::sin(lat)),
+                     float(-std::cos(lon) * std::cos(lat)));
 }
 
 inline assets::Image panorama_of(int width, const std::function<glm::vec3(glm::vec3)>& radiance) {
@@ -75,7 +76,8 @@ inline assets::Image city_lights_panorama(int width = 1024) {
         const float margin = 0.1f + 0.25f * hash01(slot, 2);
         if (lat < height && within > margin && within < 1.0f - margin) {
             const int column = int(std::floor(within * 14.0f)), row = int(std::floor(lat * 90.0f));
-            const bool window = (column % 2 == 1) && (row % 2 == 1) && hash01(slot * 131 + column, row) > 0.55f;
+            const bool window =
+                (column % 2 == 1) && (row % 2 == 1) && hash01(slot * 131 + column, row) > 0.55f;
             if (!window) return glm::vec3(0.006f, 0.006f, 0.008f);
             const float warmth = hash01(column, slot * 17 + row);
             return glm::mix(glm::vec3(4.0f, 3.2f, 2.0f), glm::vec3(16.0f, 11.0f, 6.0f), warmth);
