@@ -60,6 +60,12 @@ TEST(Colour, MidGreySrgbComesOutAsTheSameMidGrey) {
         ASSERT_FALSE(img.empty());
         EXPECT_EQ(channel_range(img), std::make_pair(128, 128)) << "tonemap " << op;
     }
+    // The same grey as an 8-bit panorama: through the GPU's conversion into an sRGB cube and back.
+    assets::Image panorama = assets::Image::make(64, 32);
+    std::fill(panorama.data.begin(), panorama.data.end(), std::uint8_t{128});
+    const std::string png = (dir / "grey_panorama.png").string();
+    ASSERT_TRUE(assets::write_png(png, panorama).ok());
+    EXPECT_EQ(channel_range(render_sky(png, {"look.tonemap=clip"})), std::make_pair(128, 128));
     // The same grey as linear HDR radiance (sRGB 128 is 0.21586 linear) comes out the same.
     const auto hdr = render_sky(uniform_exr(dir, "grey.exr", 0.21586f), {"look.tonemap=clip"});
     EXPECT_EQ(channel_range(hdr), std::make_pair(128, 128));
