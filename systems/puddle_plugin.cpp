@@ -49,7 +49,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     if (auto r = load_environment(device, params, env); !r) return r;
     auto& ground = world.insert_resource<Ground>();
     if (auto r = load_ground(device, params, ground); !r) return r;
-    spdlog::info("environment: {}; ground: {}", env.source, ground.source);
+    spdlog::info("ground: {}", ground.source);
 
     world.insert_resource<FrameClock>();
     world.insert_resource<DropSlots>();
@@ -67,6 +67,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
         frame_clock_system(w.resource<FrameClock>(), w.resource<Params>());
     });
     schedule.add_system(ecs::Stage::Input, "wave rebuild", wave_rebuild_system);
+    schedule.add_system(ecs::Stage::Input, "environment reload", environment_reload_system);
 
     schedule.add_system(ecs::Stage::Simulate, "begin step",
                         [](ecs::World& w) { begin_step_system(w.resource<FrameClock>()); });

@@ -1,6 +1,7 @@
 #pragma once
 // Textures and samplers: move-only owners made by Device::create_texture / create_sampler.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -48,14 +49,15 @@ public:
     // for cube faces (GL's cube convention), first row at t=0 for 2D.
     void upload(std::span<const std::byte> data, int level = 0, int face = 0);
     void generate_mipmaps();
-    // The framebuffer that renders into level 0 (made on first use).
-    GLuint framebuffer() const;
+    // The framebuffer that renders into a level (of one face for cube maps), made on first use.
+    GLuint framebuffer(int face = 0, int level = 0) const;
 
 private:
     friend class Device;
     TextureDesc desc_;
     GlHandle<detail::delete_texture> id_;
-    mutable GlHandle<detail::delete_framebuffer> fbo_;
+    mutable std::array<GlHandle<detail::delete_framebuffer>, 6> fbos_;  // one per cube face
+    mutable std::array<int, 6> fbo_levels_{};                           // the level each one holds
 };
 
 enum class Filter { Nearest, Linear };
