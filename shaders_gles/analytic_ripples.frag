@@ -9,8 +9,9 @@ precision highp int;
 
 #include "surface_encoding.glsl"
 
-// Three texels per source, row = source:
-//   (x, y in texels, age tau in s, amplitude A), (l1, l2, l3, Omega), (speed v, maximum phase, 0, 0)
+// Three texels per source, row = source; the first alone decides whether the front has arrived, so
+// the many texels a young source has not reached yet cost one fetch:
+//   (x, y in texels, age tau in s, speed v), (l1, l2, l3, Omega), (amplitude A, maximum phase, 0, 0)
 uniform highp sampler2D u_sources;
 uniform int u_source_count;
 
@@ -22,21 +23,22 @@ void main() {
     vec2 gradient = vec2(0.0);
     for (int i = 0; i < u_source_count; ++i) {
         vec4 a = texelFetch(u_sources, ivec2(0, i), 0);
-        vec4 b = texelFetch(u_sources, ivec2(1, i), 0);
-        vec4 c = texelFetch(u_sources, ivec2(2, i), 0);
         vec2 delta = p - a.xy;
         float d = length(delta);
         float tau = a.z;
-        float x = tau - d / c.x;
+        float v = a.w;
+        float x = tau - d / v;
         if (x <= 0.0) continue;  // the front has not arrived
+        vec4 b = texelFetch(u_sources, ivec2(1, i), 0);
+        vec4 c = texelFetch(u_sources, ivec2(2, i), 0);
         float omega = b.w / (1.0 + b.z * tau);
         float phase = omega * x;
         if (phase >= c.y) continue;  // past the ring count
         float g = 1.0 / (1.0 + b.x * d * d + b.y * tau * tau);
         float s = sin(phase);  // cos(phase - pi/2)
-        h += a.w * g * s;
+        h += c.x * g * s;
         // dW/dd = A * (dg/dd * sin + g * cos * dphase/dd), dg/dd = -2 l1 d g^2, dphase/dd = -omega / v.
-        float dw = a.w * (-2.0 * b.x * d * g * g * s - g * cos(phase) * omega / c.x);
+        float dw = c.x * (-2.0 * b.x * d * g * g * s - g * cos(phase) * omega / v);
         gradient += dw * delta / max(d, 1e-4);
     }
     // Central differences one texel apart, as surface.frag stores them: hL - hR = -2 dh/dx.

@@ -44,9 +44,9 @@ double analytic_height(const AnalyticSource& s, double d) {
 
 void set_analytic_source(AnalyticRipples& ripples, int index, const AnalyticSource& s) {
     glm::vec4* row = &ripples.texels[static_cast<std::size_t>(index) * texels_per_source];
-    row[0] = {s.position, s.age, s.amplitude};
+    row[0] = {s.position, s.age, s.speed};  // all the shader needs to skip a source whose front has not arrived
     row[1] = {s.spatial_decay, s.temporal_decay, s.frequency_decay, s.angular_frequency};
-    row[2] = {s.speed, s.max_phase, 0, 0};
+    row[2] = {s.amplitude, s.max_phase, 0, 0};
 }
 
 Result<void> prepare_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples) {
