@@ -18,8 +18,9 @@ AnalyticSource sample_analytic_source(const params::Params& params, int slot, in
     const double offset = static_cast<double>(slot) / static_cast<double>(std::max(slots, 1));
     const double life = std::floor(now / lifetime - offset);
     const double birth = (life + offset) * lifetime;
-    const DropSample drop = sample_drop(static_cast<std::uint32_t>(params.i(ParamId::rain_seed)), slot,
-                                        static_cast<std::int64_t>(life), params.f(ParamId::analytic_amplitude));
+    const DropSample drop =
+        sample_drop(static_cast<std::uint32_t>(params.i(ParamId::rain_seed)), slot,
+                    static_cast<std::int64_t>(life), params.f(ParamId::analytic_amplitude));
     return {.position = drop.position * static_cast<float>(field_resolution),
             .age = static_cast<float>(now - birth),
             .amplitude = drop.strength,
@@ -44,7 +45,8 @@ double analytic_height(const AnalyticSource& s, double d) {
 
 void set_analytic_source(AnalyticRipples& ripples, int index, const AnalyticSource& s) {
     glm::vec4* row = &ripples.texels[static_cast<std::size_t>(index) * texels_per_source];
-    row[0] = {s.position, s.age, s.speed};  // all the shader needs to skip a source whose front has not arrived
+    // The first texel is all the shader needs to skip a source whose front has not arrived.
+    row[0] = {s.position, s.age, s.speed};
     row[1] = {s.spatial_decay, s.temporal_decay, s.frequency_decay, s.angular_frequency};
     row[2] = {s.amplitude, s.max_phase, 0, 0};
 }
@@ -91,8 +93,8 @@ void analytic_ripple_system(gpu::Device& device, const params::Params& params, c
     }
     ripples.count = std::min(params.i(ParamId::analytic_sources), max_analytic_sources);
     for (int i = 0; i < ripples.count; ++i)
-        set_analytic_source(ripples, i, sample_analytic_source(params, i, ripples.count, clock.sim_time,
-                                                               surface.resolution));
+        set_analytic_source(
+            ripples, i, sample_analytic_source(params, i, ripples.count, clock.sim_time, surface.resolution));
     analytic_ripple_pass(device, ripples, surface);
 }
 

@@ -9,10 +9,9 @@
 // every screen. Ages are computed in double on the CPU, so float precision never depends on uptime.
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -27,13 +26,13 @@ inline constexpr int texels_per_source = 3;
 
 // One source as the shader reads it (the row of the data texture).
 struct AnalyticSource {
-    glm::vec2 position{};  // texels
-    float age = 0;         // tau, seconds since birth
-    float amplitude = 0;   // A
+    glm::vec2 position{};                                              // texels
+    float age = 0;                                                     // tau, seconds since birth
+    float amplitude = 0;                                               // A
     float spatial_decay = 0, temporal_decay = 0, frequency_decay = 0;  // lambda1, lambda2, lambda3
-    float angular_frequency = 0;  // Omega
-    float speed = 0;              // v, texels per second
-    float max_phase = 0;          // radians
+    float angular_frequency = 0;                                       // Omega
+    float speed = 0;                                                   // v, texels per second
+    float max_phase = 0;                                               // radians
 };
 
 // Resource.
@@ -41,7 +40,8 @@ struct AnalyticRipples {
     LazyPipeline pass;
     gpu::Texture sources;  // RGBA32F, texels_per_source x max_analytic_sources
     gpu::Sampler nearest;
-    std::vector<glm::vec4> texels = std::vector<glm::vec4>(std::size_t{texels_per_source} * max_analytic_sources);
+    std::vector<glm::vec4> texels =
+        std::vector<glm::vec4>(std::size_t{texels_per_source} * max_analytic_sources);
     int count = 0;
 };
 

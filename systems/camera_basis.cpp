@@ -1,7 +1,6 @@
 #include "systems/camera_basis.hpp"
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 

@@ -1,9 +1,9 @@
 #include "systems/grid_drop_system.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "systems/param_uniforms.hpp"
 #include "systems/scene_select.hpp"
@@ -44,8 +44,8 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
     pass.draw_fullscreen();
 }
 
-void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock, GridDrops& grid,
-                      Surface& surface) {
+void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                      GridDrops& grid, Surface& surface) {
     if (selected_scene(params) != Scene::Puddle || selected_drop_model(params) != DropModel::Grid) return;
     const bool failed_before = grid.pass.failed;
     if (auto r = prepare_grid_drops(device, surface, grid); !r) {

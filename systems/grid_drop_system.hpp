@@ -29,7 +29,7 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
                     Surface& surface, glm::ivec2 only_cell = {-1, -1});
 
 // Render stage, before the puddle pass: when the scene is the puddle and drops.model = grid.
-void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock, GridDrops& grid,
-                      Surface& surface);
+void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                      GridDrops& grid, Surface& surface);
 
 }  // namespace puddle::systems

@@ -11,10 +11,14 @@ namespace puddle::systems {
 using params::ParamId;
 
 namespace {
-gpu::PipelineDesc ocean_desc() { return {.label = "ocean", .fragment = "ocean.frag"}; }
+gpu::PipelineDesc ocean_desc() {
+    return {.label = "ocean", .fragment = "ocean.frag"};
+}
 }  // namespace
 
-Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean) { return ocean.pass.ensure(device, ocean_desc); }
+Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean) {
+    return ocean.pass.ensure(device, ocean_desc);
+}
 
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                   OceanRenderer& ocean, const RenderTarget& target) {
@@ -22,9 +26,9 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
     if (!ocean.pass.ensure_or_log(device, ocean_desc)) return;
     const gpu::FrameTarget& frame = target.target;
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const CameraBasis cam = camera_basis(params.v3(ParamId::ocean_camera_position),
-                                         params.v3(ParamId::ocean_camera_target), params.f(ParamId::camera_fov),
-                                         aspect);
+    const CameraBasis cam =
+        camera_basis(params.v3(ParamId::ocean_camera_position), params.v3(ParamId::ocean_camera_target),
+                     params.f(ParamId::camera_fov), aspect);
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(ocean.pass.pipeline);
     set_param_uniforms(pass, params);

@@ -15,7 +15,8 @@ struct OceanRenderer {
     LazyPipeline pass;
 };
 
-// Builds the pipeline now (start-up, when the config chose the ocean); otherwise the system does on first use.
+// Builds the pipeline now (start-up, when the config chose the ocean); otherwise the system does on first
+// use.
 Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean);
 
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,

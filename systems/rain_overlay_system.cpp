@@ -13,7 +13,9 @@ gpu::PipelineDesc rain_desc() {
 }
 }  // namespace
 
-Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) { return rain.pass.ensure(device, rain_desc); }
+Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) {
+    return rain.pass.ensure(device, rain_desc);
+}
 
 void rain_overlay_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                          RainOverlay& rain, const RenderTarget& target) {

@@ -20,6 +20,8 @@ DropModel selected_drop_model(const params::Params& params) {
     return DropModel::Pulse;
 }
 
-float shader_time(double seconds) { return static_cast<float>(std::fmod(seconds, 4096.0)); }
+float shader_time(double seconds) {
+    return static_cast<float>(std::fmod(seconds, 4096.0));
+}
 
 }  // namespace puddle::systems

@@ -10,7 +10,9 @@ namespace puddle::systems {
 using params::ParamId;
 
 namespace {
-gpu::PipelineDesc street_desc() { return {.label = "street", .fragment = "street.frag"}; }
+gpu::PipelineDesc street_desc() {
+    return {.label = "street", .fragment = "street.frag"};
+}
 }  // namespace
 
 Result<void> prepare_street(gpu::Device& device, StreetRenderer& street) {

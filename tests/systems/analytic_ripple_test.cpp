@@ -19,7 +19,8 @@ constexpr int N = 128;
 constexpr float C = 64.5f;  // the centre of texel 64, as in the wave tests
 
 std::unique_ptr<app::Engine> analytic_engine() {
-    return make_engine(make_params({"wave.resolution=" + std::to_string(N), "drops.model=analytic"}), {32, 18});
+    return make_engine(make_params({"wave.resolution=" + std::to_string(N), "drops.model=analytic"}),
+                       {32, 18});
 }
 
 // The surface's height channel, rows by y, as a Field (previous heights unused).
@@ -41,19 +42,37 @@ Field draw_sources(app::Engine& e, std::initializer_list<AnalyticSource> sources
 }
 
 AnalyticSource one_ring(float age) {
-    return {.position = {C, C}, .age = age, .amplitude = 1.0f, .spatial_decay = 1e-4f, .temporal_decay = 0,
-            .frequency_decay = 0, .angular_frequency = 30.0f, .speed = 60.0f / std::sqrt(2.0f),
+    return {.position = {C, C},
+            .age = age,
+            .amplitude = 1.0f,
+            .spatial_decay = 1e-4f,
+            .temporal_decay = 0,
+            .frequency_decay = 0,
+            .angular_frequency = 30.0f,
+            .speed = 60.0f / std::sqrt(2.0f),
             .max_phase = 3.14159265f};  // half a ring: one crest, whose peak moves at v
 }
 
 TEST(AnalyticRipples, GpuSumEqualsTheClosedForm) {
     auto e = analytic_engine();
     ASSERT_TRUE(e);
-    const AnalyticSource a{.position = {40.5f, 50.5f}, .age = 0.9f, .amplitude = 0.7f, .spatial_decay = 1e-3f,
-                           .temporal_decay = 0.5f, .frequency_decay = 0.3f, .angular_frequency = 25.0f,
-                           .speed = 40.0f, .max_phase = 4 * 6.2831853f};
-    const AnalyticSource b{.position = {90.5f, 70.5f}, .age = 0.5f, .amplitude = 0.4f, .spatial_decay = 0,
-                           .temporal_decay = 1.0f, .frequency_decay = 0, .angular_frequency = 40.0f, .speed = 60.0f,
+    const AnalyticSource a{.position = {40.5f, 50.5f},
+                           .age = 0.9f,
+                           .amplitude = 0.7f,
+                           .spatial_decay = 1e-3f,
+                           .temporal_decay = 0.5f,
+                           .frequency_decay = 0.3f,
+                           .angular_frequency = 25.0f,
+                           .speed = 40.0f,
+                           .max_phase = 4 * 6.2831853f};
+    const AnalyticSource b{.position = {90.5f, 70.5f},
+                           .age = 0.5f,
+                           .amplitude = 0.4f,
+                           .spatial_decay = 0,
+                           .temporal_decay = 1.0f,
+                           .frequency_decay = 0,
+                           .angular_frequency = 40.0f,
+                           .speed = 60.0f,
                            .max_phase = 2 * 6.2831853f};
     const Field f = draw_sources(*e, {a, b});
     double worst = 0, peak = 0;
@@ -119,9 +138,9 @@ TEST(AnalyticRipples, KeepsTheAskedNumberOfSourcesAlive) {
 TEST(AnalyticRipples, RingTravelsAtTheWaveFieldsSpeed) {
     const double steps_per_second = 60.0, v = steps_per_second / std::sqrt(2.0);
 
-    auto wave = make_engine(make_params({"wave.resolution=" + std::to_string(N), "wave.damping=1",
-                                         "rain.intensity=0"}),
-                            {32, 18});
+    auto wave = make_engine(
+        make_params({"wave.resolution=" + std::to_string(N), "wave.damping=1", "rain.intensity=0"}),
+        {32, 18});
     ASSERT_TRUE(wave);
     step(*wave, {{C, C, 1.0f}});
     for (int i = 1; i < 20; ++i) step(*wave);
@@ -137,7 +156,8 @@ TEST(AnalyticRipples, RingTravelsAtTheWaveFieldsSpeed) {
     const double analytic_speed = (r60 - r20) / (40.0 / steps_per_second);
 
     EXPECT_NEAR(analytic_speed, v, 0.04 * v) << "r20 " << r20 << " r60 " << r60;
-    EXPECT_NEAR(wave_speed, analytic_speed, 0.10 * analytic_speed) << "wave r20 " << wave_r20 << " r60 " << wave_r60;
+    EXPECT_NEAR(wave_speed, analytic_speed, 0.10 * analytic_speed)
+        << "wave r20 " << wave_r20 << " r60 " << wave_r60;
 }
 
 }  // namespace

@@ -16,8 +16,8 @@ constexpr int N = 128;
 
 // Widest rings allowed (a quarter cell): the limit case of the 3x3 rule.
 std::unique_ptr<app::Engine> grid_engine() {
-    return make_engine(make_params({"wave.resolution=" + std::to_string(N), "drops.model=grid", "grid.ring_width=0.25",
-                                    "grid.drops_per_second=20", "grid.cycle=1.25"}),
+    return make_engine(make_params({"wave.resolution=" + std::to_string(N), "drops.model=grid",
+                                    "grid.ring_width=0.25", "grid.drops_per_second=20", "grid.cycle=1.25"}),
                        {32, 18});
 }
 

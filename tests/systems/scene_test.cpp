@@ -107,7 +107,8 @@ TEST(RainOverlay, OffOrTransparentChangesNothing) {
 TEST(RainOverlay, StreaksTakeTheRainColour) {
     const auto plain = render_with({"scene.kind=ocean"}, 2);
     const auto red = render_with({"scene.kind=ocean", "overlay.rain=true", "overlay.rain_color=1,0,0",
-                                  "overlay.rain_opacity=1", "overlay.rain_density=2"}, 2);
+                                  "overlay.rain_opacity=1", "overlay.rain_density=2"},
+                                 2);
     int redder = 0, bluer = 0;
     for (std::size_t i = 0; i < red.data.size(); i += 4) {
         const int dr = red.data[i] - plain.data[i], db = red.data[i + 2] - plain.data[i + 2];
