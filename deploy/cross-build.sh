@@ -69,9 +69,14 @@ if [ -f "$sysroot/.puddle-packages" ] && [ "$(cat "$sysroot/.puddle-packages")" 
     echo "cross-build: sysroot $sysroot is up to date ($(wc -l <<<"$wanted") packages)"
 else
     echo "cross-build: unpacking $(wc -l <<<"$wanted") arm64 packages into $sysroot"
+    if [ -n "$(ls -A "$sysroot" 2>/dev/null)" ] && [ ! -e "$sysroot/.puddle-sysroot" ]; then
+        echo "cross-build: $sysroot is not empty and was not made by this script; not replacing it" >&2
+        exit 1
+    fi
     "${apt_arm64[@]}" install -d -y -qq "${target_packages[@]}"
     rm -rf "$sysroot"
     mkdir -p "$sysroot"
+    touch "$sysroot/.puddle-sysroot"
     while read -r name version; do
         deb="$sysroot.apt/archives/${name}_${version//:/%3a}_arm64.deb"
         [ -f "$deb" ] || deb="${deb%_arm64.deb}_all.deb"
