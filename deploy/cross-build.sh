@@ -89,8 +89,9 @@ else
     done
     # Links that maintainer scripts (update-alternatives) would have made.
     for alt in blas/libblas.so.3 lapack/liblapack.so.3; do
-        [ -e "$sysroot/usr/lib/aarch64-linux-gnu/$alt" ] &&
+        if [ -e "$sysroot/usr/lib/aarch64-linux-gnu/$alt" ]; then
             ln -sfn "$alt" "$sysroot/usr/lib/aarch64-linux-gnu/$(basename "$alt")"
+        fi
     done
     echo "$wanted" > "$sysroot/.puddle-packages"
 fi
