@@ -28,6 +28,7 @@
 #include <fmt/format.h>
 
 #include "app/engine.hpp"
+#include "assets/procedural.hpp"
 #include "params/config_loader.hpp"
 #include "systems/analytic_ripple_system.hpp"
 #include "systems/drop_system.hpp"
@@ -346,6 +347,10 @@ void register_all() {
         for (const char* m : methods)
             add(fmt::format("frame/{}/{}", m, n), [s, m](benchmark::State& st) { bench_frame(st, s, m); });
     }
+    // Start-up cost of the procedural night sky (CPU), which a board pays once.
+    add("startup/night_sky_cubemap/256", [](benchmark::State& st) {
+        for (auto _ : st) benchmark::DoNotOptimize(assets::night_sky_cubemap(256, 1));
+    });
     for (const Look& look : looks()) {
         add(fmt::format("look/{}", look.name), [&look](benchmark::State& st) { bench_look(st, look); });
         if (look.sets.size() > 1 && look.sets[0].starts_with("drops."))
