@@ -59,9 +59,11 @@ wait_for() {  # path, tenths of a second
 # exits and must give the console back: a screendump after the run must match the one before.
 kms_test() {
     if ! wait_for /dev/dri/card0 50; then
-        say "FAIL kms: no /dev/dri/card0 after loading virtio-gpu"
+        say "FAIL kms: no /dev/dri/card0 after loading the DRM driver"
         return
     fi
+    # Text on the framebuffer console, so "the console came back" is more than black against black.
+    printf '\n  puddle VM test: the text console before and after puddle --backend kms\n' >/dev/tty1
     screendump console-before || { say "FAIL kms: no screendump of the console"; return; }
     local fifo=/tmp/puddle-kms.log line pid rc shots=0 shown=0
     mkfifo "$fifo"
