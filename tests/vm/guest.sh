@@ -65,7 +65,7 @@ kms_test() {
     # Text on the framebuffer console, so "the console came back" is more than black against black.
     printf '\n  puddle VM test: the text console before and after puddle --backend kms\n' >/dev/tty1
     screendump console-before || { say "FAIL kms: no screendump of the console"; return; }
-    local fifo=/tmp/puddle-kms.log line pid rc shots=0 shown=0
+    local fifo=$TMPDIR/puddle-kms.log line pid rc shots=0 shown=0
     mkfifo "$fifo"
     "$VM_PUDDLE" --backend kms --size "${VM_W}x${VM_H}" --frames "$VM_FRAMES" --fixed-step --fps-cap "$VM_FPS" \
         --seed "$VM_SEED" $VM_PUDDLE_SETS --log-level debug --screenshot "$out/kms-self.png" >"$fifo" 2>&1 &
@@ -127,19 +127,19 @@ camera_test() {
                 NV12) frame=$((VM_W * VM_H * 3 / 2)) ;;
                 *) frame=0 ;;
             esac
-            rm -f "/tmp/vivid-$fmt.raw"
+            rm -f "$TMPDIR/vivid-$fmt.raw"
             if ! v4l2-ctl -d /dev/video0 --set-fmt-video="width=$VM_W,height=$VM_H,pixelformat=$fmt" \
-                --stream-mmap=3 --stream-count=4 --stream-to="/tmp/vivid-$fmt.raw" >/tmp/v4l2.log 2>&1; then
-                say "FAIL camera: streaming $fmt: $(tail -n 1 /tmp/v4l2.log)"
+                --stream-mmap=3 --stream-count=4 --stream-to="$TMPDIR/vivid-$fmt.raw" >"$TMPDIR/v4l2.log" 2>&1; then
+                say "FAIL camera: streaming $fmt: $(tail -n 1 "$TMPDIR/v4l2.log")"
                 continue
             fi
-            size=$(stat -c %s "/tmp/vivid-$fmt.raw" 2>/dev/null || echo 0)
+            size=$(stat -c %s "$TMPDIR/vivid-$fmt.raw" 2>/dev/null || echo 0)
             if [ "$size" -lt "$frame" ] || [ "$size" -eq 0 ] || { [ "$frame" -gt 0 ] && [ $((size % frame)) -ne 0 ]; }; then
                 say "FAIL camera: $fmt: $size bytes, not whole frames of $frame"
                 continue
             fi
             [ "$frame" -gt 0 ] && say "NOTE camera: $fmt: $((size / frame)) frames of ${VM_W}x${VM_H} streamed" 
-            head -c "$frame" "/tmp/vivid-$fmt.raw" >"$out/vivid-$fmt.raw"
+            head -c "$frame" "$TMPDIR/vivid-$fmt.raw" >"$out/vivid-$fmt.raw"
             streamed+="$fmt "
         done
         if [ -n "$streamed" ]; then
@@ -149,9 +149,12 @@ camera_test() {
         fi
     fi
 
-    # HOOK (camera feature): when puddle has environment.source = "camera", tests/vm/camera.sh runs
-    # here with vivid loaded (it reports its own VMTEST lines). It is the place for: the reflection
-    # shows vivid's test pattern, and `rmmod vivid` mid-run falls back to the cubemap and keeps running.
+    # HOOK (camera feature): when puddle has environment.source = "camera", tests/vm/camera.sh is
+    # sourced here with vivid loaded on /dev/video0. It can use $VM_PUDDLE, $out (the host sees it as
+    # build/vm-test/share), $TMPDIR, say, screendump NAME (the host saves build/vm-test/NAME.ppm) and
+    # "$busybox" rmmod vivid; it reports its own VMTEST lines. It is the place for: the reflection shows
+    # vivid's test pattern, and `rmmod vivid` mid-run falls back to the cubemap and keeps running. It
+    # must leave vivid loaded (the unload check below follows it).
     if [ "$VM_PUDDLE_HAS_CAMERA" -gt 0 ]; then
         if [ -f "$VM_SRC/tests/vm/camera.sh" ]; then
             # shellcheck source=/dev/null
