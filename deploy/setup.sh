@@ -14,6 +14,10 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev            # tests and puddle-bench
     xvfb xauth                                            # the window backend's test runs under Xvfb
 )
+# The VM test (tests/vm/run) boots an amd64 Debian kernel under QEMU and runs the host's binary in it.
+if [ "$(dpkg --print-architecture)" = amd64 ]; then
+    packages+=(qemu-system-x86 busybox-static cpio kmod v4l-utils)
+fi
 
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then

@@ -148,7 +148,7 @@ int run(int argc, const char* const* argv) {
         }
         // Headless runs advance a fixed step per frame, so the same command line gives the same image.
         const auto now = clock::now();
-        const double dt = headless ? fixed_dt : std::chrono::duration<double>(now - last).count();
+        const double dt = headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
         last = now;
         if (!screenshot.empty() && frames != 0 && n == frames - 1) e.capture_next_frame();
         if (auto r = e.frame(dt); !r) return fail(r.error());

@@ -55,6 +55,9 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")->check(CLI::Range(0, 2147483647));
     cli.add_option("--fps-cap", o.fps_cap, "Render at most this many frames per second (fanless boards)")
         ->check(CLI::Range(0.0, 1000.0));
+    cli.add_flag("--fixed-step", o.fixed_step,
+                 "Advance simulated time by 1/60 s (or 1/fps-cap) per frame on any backend, as headless runs do: "
+                 "frame N on a screen is then the same picture as a headless render of N frames");
     cli.add_option("--gpio", o.gpio, "Knob backend: gpiod (the GPIO header), or mock:PATH to drive knobs from a script or FIFO");
     cli.add_option("--state", o.state_path, "Where knob changes are saved (default: $STATE_DIRECTORY/state.toml, else ~/.local/state/puddle/state.toml)");
     cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")

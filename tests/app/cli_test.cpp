@@ -50,6 +50,7 @@ TEST(Cli, Defaults) {
     EXPECT_EQ(o.screenshot, "");
     EXPECT_FALSE(o.seed.has_value());
     EXPECT_EQ(o.fps_cap, 0.0);
+    EXPECT_FALSE(o.fixed_step);
     EXPECT_EQ(o.log_level, "info");
 }
 
@@ -125,6 +126,7 @@ TEST(Cli, OtherOptions) {
     EXPECT_EQ(parse_ok({"-c", "a.toml"}).config_path, "a.toml");
     EXPECT_EQ(parse_error({"--log-level", "loud"}).code, ExitCode::Config);
     EXPECT_EQ(parse_error({"--fps-cap", "5000"}).code, ExitCode::Config);
+    EXPECT_TRUE(parse_ok({"--fixed-step"}).fixed_step);
 }
 
 TEST(Cli, HelpAndVersionExitWithOk) {

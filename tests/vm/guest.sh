@@ -1,0 +1,190 @@
+#!/bin/bash
+# Runs inside the test VM, chrooted into the host's root file system (see tests/vm/init), so every
+# program here is the host's own: the puddle binary just built, bash, v4l2-ctl, Mesa. It reports to
+# the host on the serial console with lines that start with "VMTEST:":
+#   VMTEST: PASS name: what held          VMTEST: FAIL name: what went wrong
+#   VMTEST: SKIP name: why                VMTEST: screendump NAME (the host answers "VMTEST-ACK NAME")
+# The host (tests/vm/run) takes the screendumps through the QEMU monitor and compares the pictures.
+set -u
+# shellcheck source=/dev/null
+. /run/vm/vm.env
+out=/run/vm/out
+busybox=/run/vm/busybox
+serial=/dev/ttyS0
+
+say() { echo "VMTEST: $*"; }
+
+# The host's answers arrive on the serial line; keep it open so nothing typed in between is lost.
+exec 5<"$serial"
+stty -F "$serial" -echo 2>/dev/null
+
+# Asks the host to save the screen as $out/NAME.ppm and waits until it has.
+screendump() {
+    local line
+    say "screendump $1"
+    while IFS= read -r -t 120 line <&5; do
+        [[ $line == *"VMTEST-ACK $1"* ]] && return 0
+    done
+    return 1
+}
+
+# Loads the modules of one list that tests/vm/run resolved on the host (in load order), with
+# parameters for the last one (the driver itself).
+load_modules() {
+    local list=$1 params=$2 module last
+    last=$(tail -n 1 "/run/vm/modules/$list.list")
+    while read -r module; do
+        if [ "$module" = "$last" ]; then
+            # shellcheck disable=SC2086
+            "$busybox" insmod "/run/vm/modules/$module" $params || return 1
+        else
+            "$busybox" insmod "/run/vm/modules/$module" || return 1
+        fi
+    done < "/run/vm/modules/$list.list"
+}
+
+wait_for() {  # path, tenths of a second
+    local i
+    for ((i = 0; i < $2; ++i)); do
+        [ -e "$1" ] && return 0
+        sleep 0.1
+    done
+    return 1
+}
+
+# --- KMS: the real binary on virtio-gpu ---------------------------------------------------------
+# Puddle runs with --fixed-step, so frame N on the screen is the picture a headless render of N frames
+# gives on the host. When frame VM_SHOT_FRAME is on screen (its page flip is done; the binary logs it
+# at debug level) the script stops it, the host takes a screendump, and it goes on to VM_FRAMES frames,
+# exits and must give the console back: a screendump after the run must match the one before.
+kms_test() {
+    if ! wait_for /dev/dri/card0 50; then
+        say "FAIL kms: no /dev/dri/card0 after loading the DRM driver"
+        return
+    fi
+    # Text on the framebuffer console, so "the console came back" is more than black against black.
+    printf '\n  puddle VM test: the text console before and after puddle --backend kms\n' >/dev/tty1
+    screendump console-before || { say "FAIL kms: no screendump of the console"; return; }
+    local fifo=$TMPDIR/puddle-kms.log line pid rc shots=0 shown=0
+    mkfifo "$fifo"
+    "$VM_PUDDLE" --backend kms --size "${VM_W}x${VM_H}" --frames "$VM_FRAMES" --fixed-step --fps-cap "$VM_FPS" \
+        --seed "$VM_SEED" $VM_PUDDLE_SETS --log-level debug --screenshot "$out/kms-self.png" >"$fifo" 2>&1 &
+    pid=$!
+    while IFS= read -r line; do
+        echo "puddle| $line"
+        echo "$line" >>"$out/kms.log"
+        [[ $line == *"kms: frame "*" on screen"* ]] && shown=$((shown + 1))
+        if [[ $line == *"kms: frame $VM_SHOT_FRAME on screen"* ]]; then
+            kill -STOP "$pid"
+            screendump kms-frame && shots=1
+            kill -CONT "$pid"
+        fi
+    done <"$fifo"
+    wait "$pid"
+    rc=$?
+    screendump console-after || say "FAIL kms: no screendump after the run"
+    local described
+    described=$(grep -m1 -o 'kms: /dev/dri/card[0-9]* [^ ]* [0-9]*x[0-9]*@[0-9]*' "$out/kms.log")
+    if [ "$rc" -ne 0 ]; then
+        say "FAIL kms: puddle --backend kms exited with $rc (log: kms.log)"
+    elif [ -z "$described" ]; then
+        say "FAIL kms: puddle did not log the card, connector and mode it chose"
+    elif [ "$shown" -ne "$VM_FRAMES" ]; then
+        say "FAIL kms: $shown of $VM_FRAMES frames reached the screen"
+    elif [ "$shots" -ne 1 ]; then
+        say "FAIL kms: frame $VM_SHOT_FRAME never reached the screen, or the host took no screendump"
+    elif grep -q -E '^(warning|error): kms' "$out/kms.log"; then
+        say "FAIL kms: $(grep -m1 -E '^(warning|error): kms' "$out/kms.log")"
+    else
+        say "PASS kms: $described, $shown page flips, exit 0"
+    fi
+}
+
+# --- camera: vivid on /dev/video0 -----------------------------------------------------------------
+# Streams a few frames of each format vivid offers that the camera feature reads (YUYV, NV12, MJPEG)
+# and keeps the first frame of each for the host to check; then unloads vivid.
+camera_test() {
+    if ! load_modules vivid "n_devs=1 node_types=0x1"; then
+        say "FAIL camera: loading vivid"
+        return
+    fi
+    if ! wait_for /dev/video0 50; then
+        say "FAIL camera: vivid loaded but no /dev/video0"
+        return
+    fi
+    if ! command -v v4l2-ctl >/dev/null; then
+        say "SKIP camera: v4l2-ctl is not installed on the host (apt-get install v4l-utils)"
+    else
+        local formats fmt size frame streamed=""
+        formats=$(v4l2-ctl -d /dev/video0 --list-formats 2>&1)
+        for fmt in YUYV NV12 MJPG; do
+            if ! grep -q "'$fmt'" <<<"$formats"; then
+                say "NOTE camera: vivid does not offer $fmt"
+                continue
+            fi
+            case $fmt in
+                YUYV) frame=$((VM_W * VM_H * 2)) ;;
+                NV12) frame=$((VM_W * VM_H * 3 / 2)) ;;
+                *) frame=0 ;;
+            esac
+            rm -f "$TMPDIR/vivid-$fmt.raw"
+            if ! v4l2-ctl -d /dev/video0 --set-fmt-video="width=$VM_W,height=$VM_H,pixelformat=$fmt" \
+                --stream-mmap=3 --stream-count=4 --stream-to="$TMPDIR/vivid-$fmt.raw" >"$TMPDIR/v4l2.log" 2>&1; then
+                say "FAIL camera: streaming $fmt: $(tail -n 1 "$TMPDIR/v4l2.log")"
+                continue
+            fi
+            size=$(stat -c %s "$TMPDIR/vivid-$fmt.raw" 2>/dev/null || echo 0)
+            if [ "$size" -lt "$frame" ] || [ "$size" -eq 0 ] || { [ "$frame" -gt 0 ] && [ $((size % frame)) -ne 0 ]; }; then
+                say "FAIL camera: $fmt: $size bytes, not whole frames of $frame"
+                continue
+            fi
+            [ "$frame" -gt 0 ] && say "NOTE camera: $fmt: $((size / frame)) frames of ${VM_W}x${VM_H} streamed" 
+            head -c "$frame" "$TMPDIR/vivid-$fmt.raw" >"$out/vivid-$fmt.raw"
+            streamed+="$fmt "
+        done
+        if [ -n "$streamed" ]; then
+            say "PASS camera: /dev/video0 streamed ${streamed% } at ${VM_W}x${VM_H}"
+        else
+            say "FAIL camera: no format streamed"
+        fi
+    fi
+
+    # HOOK (camera feature): when puddle has environment.source = "camera", tests/vm/camera.sh is
+    # sourced here with vivid loaded on /dev/video0. It can use $VM_PUDDLE, $out (the host sees it as
+    # build/vm-test/share), $TMPDIR, say, screendump NAME (the host saves build/vm-test/NAME.ppm) and
+    # "$busybox" rmmod vivid; it reports its own VMTEST lines. It is the place for: the reflection shows
+    # vivid's test pattern, and `rmmod vivid` mid-run falls back to the cubemap and keeps running. It
+    # must leave vivid loaded (the unload check below follows it).
+    if [ "$VM_PUDDLE_HAS_CAMERA" -gt 0 ]; then
+        if [ -f "$VM_SRC/tests/vm/camera.sh" ]; then
+            # shellcheck source=/dev/null
+            . "$VM_SRC/tests/vm/camera.sh"
+        else
+            say "FAIL camera-puddle: puddle has environment.source but tests/vm/camera.sh is missing"
+        fi
+    else
+        say "SKIP camera-puddle: this puddle has no environment.source (the camera feature is not merged)"
+    fi
+
+    if "$busybox" rmmod vivid && [ ! -e /dev/video0 ]; then
+        say "PASS camera-unload: rmmod vivid removed /dev/video0"
+    else
+        say "FAIL camera-unload: vivid did not unload cleanly"
+    fi
+}
+
+# --- GPIO: gpio-sim ---------------------------------------------------------------------------------
+# tests/vm/run reports the skip when the kernel lacks gpio-sim (no Debian 12 kernel has it, bookworm-
+# backports included); this is where an encoder would be turned by writing the simulated lines' pulls.
+gpio_test() {
+    say "SKIP gpio: kernel $(uname -r) has gpio-sim, but driving it is not written yet (tests/vm/guest.sh)"
+}
+
+for t in $VM_TESTS; do
+    case $t in
+        kms) kms_test ;;
+        camera) camera_test ;;
+        gpio) gpio_test ;;
+        *) say "FAIL $t: unknown test" ;;
+    esac
+done
