@@ -13,6 +13,7 @@ packages=(
     libgpiod-dev libv4l-dev libjpeg-dev                   # knobs and camera
     libgtest-dev libgmock-dev libbenchmark-dev            # tests and puddle-bench
     xvfb xauth                                            # the window backend's test runs under Xvfb
+    dpkg-dev systemd                                      # the .deb (cpack, dpkg-shlibdeps); unit checks
 )
 # The VM test (tests/vm/run) boots an amd64 Debian kernel under QEMU and runs the host's binary in it.
 if [ "$(dpkg --print-architecture)" = amd64 ]; then
