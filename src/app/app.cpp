@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/cli.hpp"
+#include "app/check.hpp"
 #include "app/engine.hpp"
 #include "app/logging.hpp"
 #include "app/service_notify.hpp"
@@ -99,6 +100,7 @@ int run(int argc, const char* const* argv) {
         std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(), stdout);
         return 0;
     }
+    if (o.check) return run_check(o, config_path(o));
     auto tuning = load_tuning(o);
     if (!tuning) return fail(tuning.error());
     const auto params = std::make_unique<params::Params>(tuning->layers.compose());

@@ -44,6 +44,7 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
     cli.add_option("--set,-s", o.sets, "Set a parameter, e.g. --set rain.drop_count=20 (repeatable; wins over the config)");
     cli.add_flag("--list-params", o.list_params, "Print every parameter with its type, default, range and meaning");
     cli.add_flag("--markdown", o.markdown, "With --list-params: print the Markdown table the README carries");
+    cli.add_flag("--check", o.check, "Check this machine (config, screens, GPU, GPIO, cameras): OK or what to fix, then exit");
     cli.add_flag("--print-config", o.print_config, "Print every effective value and where it came from, then exit");
     cli.add_option("--backend,-b", backend, "Display: auto, kms (fullscreen on a screen), window (desktop), headless")
         ->check(CLI::IsMember({"auto", "kms", "window", "headless"}));

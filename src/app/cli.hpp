@@ -17,6 +17,7 @@ struct CliOptions {
     bool list_params = false;
     bool markdown = false;            // --list-params as the README's Markdown table
     bool print_config = false;
+    bool check = false;               // --check: report on this machine and exit
     platform::DisplayOptions display;
     std::optional<long> frames;       // stop after N frames (headless default: 180)
     std::string screenshot;           // write the last frame as PNG

@@ -1,7 +1,9 @@
 #include "io/gpio_backend.hpp"
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -14,6 +16,15 @@ bool is_number(std::string_view text) {
     for (char c : text)
         if (c < '0' || c > '9') return false;
     return true;
+}
+
+std::vector<std::string> gpio_chip_paths() {
+    std::vector<std::string> paths;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator("/dev", ec))
+        if (e.path().filename().string().starts_with("gpiochip")) paths.push_back(e.path().string());
+    std::sort(paths.begin(), paths.end());
+    return paths;
 }
 
 Error gpio_request_error(const LineRequest& r, int err) {

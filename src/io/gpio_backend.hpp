@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "params/knob_spec.hpp"
 #include "util/result.hpp"
@@ -38,6 +39,14 @@ public:
     virtual Result<std::size_t> read_events(std::span<LineEvent> out) = 0;
 };
 
+// A GPIO chip as `puddle --check` lists it.
+struct GpioChipInfo {
+    std::string name;   // gpiochip0
+    std::string label;  // pinctrl-bcm2711
+    unsigned lines = 0;
+    std::string error;  // set when it could not be opened (permissions)
+};
+
 class GpioBackend {
 public:
     virtual ~GpioBackend() = default;
@@ -46,7 +55,12 @@ public:
     virtual Result<std::unique_ptr<GpioLine>> request(const LineRequest& request) = 0;
     // Called once per frame before lines are read (the mock reads its script here).
     virtual void poll(double /*now*/) {}
+    // The chips this backend can see.
+    virtual std::vector<GpioChipInfo> chips() = 0;
 };
+
+// /dev/gpiochip* in name order (shared by the libgpiod backends).
+std::vector<std::string> gpio_chip_paths();
 
 // The libgpiod backend this build has (v1 or v2; defined in gpio_gpiod_v1.cpp or gpio_gpiod_v2.cpp).
 std::unique_ptr<GpioBackend> make_gpiod_backend();

@@ -90,6 +90,20 @@ public:
         std::unique_ptr<GpioLine> out = std::make_unique<GpiodV1Line>(chip, line);
         return out;
     }
+
+    std::vector<GpioChipInfo> chips() override {
+        std::vector<GpioChipInfo> out;
+        for (const std::string& path : gpio_chip_paths()) {
+            gpiod_chip* chip = gpiod_chip_open(path.c_str());
+            if (!chip) {
+                out.push_back({path, "", 0, std::strerror(errno)});
+                continue;
+            }
+            out.push_back({gpiod_chip_name(chip), gpiod_chip_label(chip), gpiod_chip_num_lines(chip), ""});
+            gpiod_chip_close(chip);
+        }
+        return out;
+    }
 };
 
 }  // namespace

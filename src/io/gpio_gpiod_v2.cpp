@@ -121,6 +121,21 @@ public:
         std::unique_ptr<GpioLine> out = std::make_unique<GpiodV2Line>(std::move(request), offsets[0]);
         return out;  // the request keeps its own descriptor; the chip handle can close
     }
+
+    std::vector<GpioChipInfo> chips() override {
+        std::vector<GpioChipInfo> out;
+        for (const std::string& path : gpio_chip_paths()) {
+            ChipPtr chip(gpiod_chip_open(path.c_str()));
+            InfoPtr info(chip ? gpiod_chip_get_info(chip.get()) : nullptr);
+            if (!info) {
+                out.push_back({path, "", 0, std::strerror(errno)});
+                continue;
+            }
+            out.push_back({gpiod_chip_info_get_name(info.get()), gpiod_chip_info_get_label(info.get()),
+                           static_cast<unsigned>(gpiod_chip_info_get_num_lines(info.get())), ""});
+        }
+        return out;
+    }
 };
 
 }  // namespace

@@ -88,6 +88,12 @@ MockGpio::~MockGpio() {
     if (fd_ >= 0) ::close(fd_);
 }
 
+std::vector<GpioChipInfo> MockGpio::chips() {
+    std::vector<GpioChipInfo> out;
+    for (const auto& [name, chip] : chips_) out.push_back({name, chip->label, mock_line_count, ""});
+    return out;
+}
+
 void MockGpio::add_chip(const std::string& name, const std::string& label) {
     auto& chip = chips_[name];
     if (!chip) chip = std::make_shared<Chip>();

@@ -29,6 +29,7 @@ public:
     std::string_view name() const override { return "mock"; }
     Result<std::unique_ptr<GpioLine>> request(const LineRequest& request) override;
     void poll(double now) override;
+    std::vector<GpioChipInfo> chips() override;
 
     // In-process control, the same as the script commands.
     void add_chip(const std::string& name, const std::string& label = {});

@@ -195,4 +195,17 @@ std::string EglContext::vendor() const {
     return v ? v : "unknown";
 }
 
+bool current_display_has_extension(std::string_view name) {
+    const EGLDisplay display = eglGetCurrentDisplay();
+    const char* list = display == EGL_NO_DISPLAY ? nullptr : eglQueryString(display, EGL_EXTENSIONS);
+    if (!list) return false;
+    const std::string_view all(list);
+    for (std::size_t at = all.find(name); at != std::string_view::npos; at = all.find(name, at + 1)) {
+        const bool starts = at == 0 || all[at - 1] == ' ';
+        const bool ends = at + name.size() == all.size() || all[at + name.size()] == ' ';
+        if (starts && ends) return true;
+    }
+    return false;
+}
+
 }  // namespace puddle::platform

@@ -56,4 +56,7 @@ private:
 // eglGetError() as a name, for messages: "EGL_BAD_MATCH".
 const char* egl_error_name(EGLint error);
 
+// Whether the EGL display of the current context has `name` (false with no current context).
+bool current_display_has_extension(std::string_view name);
+
 }  // namespace puddle::platform

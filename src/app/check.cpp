@@ -1,0 +1,151 @@
+#include "app/check.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <string_view>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "app/cli.hpp"
+#include "app/version.hpp"
+#include "gpu/device.hpp"
+#include "io/gpio_backend.hpp"
+#include "params/config_loader.hpp"
+#include "platform/display.hpp"
+#include "platform/drm_inventory.hpp"
+#include "platform/egl_context.hpp"
+
+namespace puddle::app {
+
+namespace {
+
+struct Report {
+    int problems = 0;
+    void section(std::string_view name) { std::printf("\n[%.*s]\n", static_cast<int>(name.size()), name.data()); }
+    void ok(const std::string& text) { std::printf("  OK    %s\n", text.c_str()); }
+    void absent(const std::string& text) { std::printf("  --    %s\n", text.c_str()); }  // fine, just not here
+    void fix(const std::string& text) {
+        std::printf("  FIX   %s\n", text.c_str());
+        ++problems;
+    }
+    void note(const std::string& text) { std::printf("        %s\n", text.c_str()); }
+};
+
+std::string join(const std::vector<std::string>& items, std::size_t max) {
+    std::string out;
+    for (std::size_t i = 0; i < items.size() && i < max; ++i) out += (i ? ", " : "") + items[i];
+    if (items.size() > max) out += fmt::format(" and {} more", items.size() - max);
+    return out;
+}
+
+}  // namespace
+
+int run_check(const CliOptions& o, const std::string& config_path) {
+    Report r;
+    int exit_code = 0;
+    if (spdlog::get_level() < spdlog::level::warn) spdlog::set_level(spdlog::level::warn);  // the report is the output
+    std::printf("puddle %s --check\n", std::string(version()).c_str());
+
+    r.section("config");
+    std::vector<params::KnobSpec> knobs;
+    if (config_path.empty()) {
+        r.absent("no config file (/etc/puddle/puddle.toml does not exist): built-in defaults are used");
+    } else {
+        auto config = params::load_config_file(config_path);
+        if (!config) {
+            r.fix(config.error().message);
+            exit_code = static_cast<int>(ExitCode::Config);
+        } else {
+            r.ok(fmt::format("{}: valid ({} values, {} knobs{}{})", config_path, config->entries.size(),
+                             config->knobs.size(), config->preset ? ", preset " : "", config->preset.value_or("")));
+            knobs = config->knobs;
+        }
+    }
+
+    r.section("display: DRM/KMS (--backend kms)");
+    const auto cards = platform::list_drm_cards();
+    if (cards.empty()) r.absent("no /dev/dri/card*: no KMS screen here (the window and headless backends still work)");
+    for (const auto& card : cards) {
+        if (!card.error.empty()) {
+            (card.error.find("render-only") != std::string::npos ? r.absent(fmt::format("{}: {}", card.path, card.error))
+                                                                  : r.fix(fmt::format("{}: {}", card.path, card.error)));
+            continue;
+        }
+        r.ok(fmt::format("{} ({}): {} connector(s)", card.path, card.driver, card.connectors.size()));
+        for (const auto& c : card.connectors)
+            r.note(fmt::format("{:<12} {}{}", c.name, c.connected ? "connected" : "not connected",
+                               c.modes.empty() ? "" : ": " + join(c.modes, 6)));
+    }
+
+    r.section("GPU: EGL and OpenGL ES");
+    {
+        platform::DisplayOptions headless{.backend = platform::BackendKind::Headless, .size = {16, 16}};
+        auto display = platform::create_display(headless);
+        if (!display) {
+            r.fix(display.error().message + " (install Mesa: libegl-mesa0 libgl1-mesa-dri; check group render)");
+            exit_code = exit_code ? exit_code : static_cast<int>(ExitCode::Display);
+        } else {
+            gpu::Device device;
+            const auto& caps = device.caps();
+            r.ok(fmt::format("{} / {} / {}", caps.vendor, caps.renderer, caps.version));
+            auto feature = [&](bool have, const char* what, const char* without) {
+                if (have) r.ok(what);
+                else r.absent(fmt::format("{}: missing; {}", what, without));
+            };
+            feature(caps.float_render_targets, "float render targets (wave field in RG32F)",
+                    "the wave field runs in fixed point (RG32I), the same picture");
+            feature(caps.half_float_render_targets, "half-float render targets (HDR sky, surface)",
+                    "HDR skies are stored as RGBM, the surface as RGBA8");
+            feature(caps.float_linear_filtering, "filtering of 32-bit float textures", "not needed: Puddle never filters them");
+            feature(caps.timer_queries, "timer queries", "--stats and puddle-bench show CPU times only");
+            feature(caps.external_images, "external images (OES_EGL_image_external_essl3)", "camera frames are copied");
+            feature(platform::current_display_has_extension("EGL_EXT_image_dma_buf_import"),
+                    "dmabuf import (EGL_EXT_image_dma_buf_import)", "camera frames are copied (glTexSubImage2D)");
+            feature(caps.anisotropic_filtering, "anisotropic filtering", "the ground is filtered trilinearly");
+        }
+    }
+
+    r.section("GPIO knobs (libgpiod)");
+    auto gpio = io::make_gpio_backend(o.gpio);
+    if (!gpio) {
+        r.fix(gpio.error().message);
+    } else {
+        const auto chips = (*gpio)->chips();
+        if (chips.empty()) r.absent("no GPIO chips (/dev/gpiochip*): knobs cannot work on this machine");
+        for (const auto& chip : chips) {
+            if (!chip.error.empty())
+                r.fix(fmt::format("{}: {} (add the user to group gpio; install deploy/99-puddle-gpio.rules)", chip.name,
+                                  chip.error));
+            else
+                r.ok(fmt::format("{} \"{}\", {} lines", chip.name, chip.label, chip.lines));
+        }
+        if (knobs.empty()) r.absent("no [[knob]] in the config");
+        for (std::size_t i = 0; i < knobs.size(); ++i) {
+            const auto& k = knobs[i];
+            io::LineRequest req{k.chip, k.line, k.active_low, k.bias};
+            auto a = (*gpio)->request(req);
+            Result<std::unique_ptr<io::GpioLine>> b = std::unique_ptr<io::GpioLine>();
+            if (a && k.kind == params::KnobKind::Encoder) {
+                req.line = k.line_b;
+                b = (*gpio)->request(req);
+            }
+            if (a && b) r.ok(fmt::format("knob {}: {}", i + 1, k.describe()));
+            else r.fix(fmt::format("knob {} ({}): {}", i + 1, k.describe(), (!a ? a.error() : b.error()).message));
+        }
+    }
+
+    r.section("cameras (V4L2)");
+    std::vector<std::string> videos;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator("/dev", ec))
+        if (e.path().filename().string().starts_with("video")) videos.push_back(e.path().string());
+    if (videos.empty()) r.absent("no /dev/video*: environment.source = \"camera\" would show the cubemap");
+    for (const auto& v : videos) r.ok(v);
+
+    std::printf("\n%s\n", r.problems == 0 ? "Everything Puddle needs here is in order."
+                                          : fmt::format("{} thing(s) to fix (FIX above).", r.problems).c_str());
+    return exit_code;
+}
+
+}  // namespace puddle::app
