@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "systems/display_rotation.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/render_system.hpp"
@@ -26,6 +27,10 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
     if (auto r = systems::add_puddle_plugin(engine->world_, engine->schedule_); !r) return r.error();
 
     Engine* self = engine.get();
+    engine->world_.insert_resource<systems::DisplayRotation>();
+    engine->schedule_.add_system(ecs::Stage::Present, "rotate", [](ecs::World& w) {
+        systems::rotation_system(w.resource<gpu::Device>(), w.resource<systems::DisplayRotation>());
+    });
     engine->schedule_.add_system(ecs::Stage::Present, "capture", [self](ecs::World&) {
         if (!self->capture_) return;
         self->capture_ = false;
@@ -48,7 +53,9 @@ gpu::Device& Engine::device() {
 Result<void> Engine::frame(double dt) {
     display_->make_current();
     world_.resource<systems::FrameClock>().frame_dt = dt;
-    world_.resource<systems::RenderTarget>().target = display_->frame_target();
+    world_.resource<systems::RenderTarget>().target =
+        systems::begin_rotated_frame(world_.resource<gpu::Device>(), world_.resource<params::Params>(),
+                                     world_.resource<systems::DisplayRotation>(), display_->frame_target());
     schedule_.run_frame(world_);
     return present_result_;
 }
