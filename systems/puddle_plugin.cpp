@@ -4,6 +4,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "systems/camera_environment.hpp"
+#include "systems/camera_system.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/environment_system.hpp"
 #include "systems/frame_clock.hpp"
@@ -50,6 +52,8 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     auto& ground = world.insert_resource<Ground>();
     if (auto r = load_ground(device, params, ground); !r) return r;
     spdlog::info("environment: {}; ground: {}", env.source, ground.source);
+    world.insert_resource<CameraEnvironment>();
+    if (auto r = open_camera_feed(world.insert_resource<CameraFeed>(), params); !r) return r;
 
     world.insert_resource<FrameClock>();
     world.insert_resource<DropSlots>();
@@ -67,6 +71,10 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
         frame_clock_system(w.resource<FrameClock>(), w.resource<Params>());
     });
     schedule.add_system(ecs::Stage::Input, "wave rebuild", wave_rebuild_system);
+    schedule.add_system(ecs::Stage::Input, "camera feed", [](ecs::World& w) {
+        camera_feed_system(w.resource<CameraFeed>(), w.resource<Params>(), w.resource<FrameClock>(),
+                           w.resource<gpu::Device>(), w.resource<CameraEnvironment>());
+    });
 
     schedule.add_system(ecs::Stage::Simulate, "begin step",
                         [](ecs::World& w) { begin_step_system(w.resource<FrameClock>()); });
@@ -82,10 +90,14 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.add_system(ecs::Stage::Render, "surface", [](ecs::World& w) {
         surface_system(w.resource<gpu::Device>(), w.resource<WaveField>(), w.resource<Surface>());
     });
+    schedule.add_system(ecs::Stage::Render, "camera environment", [](ecs::World& w) {
+        camera_environment_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Environment>(),
+                                  w.resource<CameraEnvironment>());
+    });
     schedule.add_system(ecs::Stage::Render, "puddle", [](ecs::World& w) {
         render_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Surface>(),
                       w.resource<Environment>(), w.resource<Ground>(), w.resource<PuddleRenderer>(),
-                      w.resource<RenderTarget>());
+                      w.resource<RenderTarget>(), w.resource<CameraEnvironment>().reflection());
     });
     return {};
 }

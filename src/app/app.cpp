@@ -30,7 +30,7 @@ int fail(const Error& e) {
     return static_cast<int>(e.code);
 }
 
-// Defaults < config file < --seed < --set.
+// Defaults < config file < --seed, --camera < --set.
 Result<params::Params> load_params(const CliOptions& o) {
     params::Params params;
     std::string path = o.config_path;
@@ -44,6 +44,10 @@ Result<params::Params> load_params(const CliOptions& o) {
         spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
     }
     if (o.seed) params.set(params::ParamId::rain_seed, *o.seed, params::ParamSource::CommandLine);
+    if (!o.camera.empty()) {  // shorthand for the two --set lines it stands for
+        params.set(params::ParamId::environment_source, std::string("camera"), params::ParamSource::CommandLine);
+        params.set(params::ParamId::environment_camera_device, o.camera, params::ParamSource::CommandLine);
+    }
     for (const std::string& s : o.sets) {
         auto entry = params::parse_assignment(s);
         if (!entry) return entry.error();

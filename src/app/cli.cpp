@@ -51,6 +51,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")->check(CLI::Range(0, 2147483647));
     cli.add_option("--fps-cap", o.fps_cap, "Render at most this many frames per second (fanless boards)")
         ->check(CLI::Range(0.0, 1000.0));
+    cli.add_option("--camera", o.camera,
+                   "Reflect a camera: a V4L2 device (/dev/video0) or mock:PATH (an image or a folder of images)");
     cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
     try {

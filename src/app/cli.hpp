@@ -23,6 +23,7 @@ struct CliOptions {
     std::optional<int> seed;          // shorthand for --set rain.seed=N
     double fps_cap = 0;               // 0: the display's pace (vblank), headless: as fast as possible
     std::string log_level = "info";
+    std::string camera;               // --camera DEVICE|mock:PATH: environment.source = camera from that device
 };
 
 // Returns the options, or an Error with exit code 2 for bad flags. `--help` and `--version` print and

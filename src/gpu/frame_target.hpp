@@ -10,6 +10,7 @@ class Texture;
 struct FrameTarget {
     const Texture* texture = nullptr;  // null: the current EGL surface's framebuffer (framebuffer 0)
     glm::ivec2 size{0, 0};
+    int face = 0;  // cube map targets: 0..5, GL order +X, -X, +Y, -Y, +Z, -Z
 };
 
 }  // namespace puddle::gpu

@@ -14,7 +14,7 @@ RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
     : store_(desc.store), labels_(&labels) {
     labels_->push_group(desc.label);
     is_default_framebuffer_ = desc.target.texture == nullptr;
-    glBindFramebuffer(GL_FRAMEBUFFER, is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer(desc.target.face));
     glViewport(0, 0, desc.target.size.x, desc.target.size.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
@@ -36,7 +36,11 @@ RenderPass& RenderPass::set_pipeline(const Pipeline& pipeline) {
 
 RenderPass& RenderPass::set_texture(int unit, const Texture& texture, const Sampler& sampler) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(texture.desc().kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, texture.id());
+    const TextureKind kind = texture.desc().kind;
+    glBindTexture(kind == TextureKind::Cube       ? GL_TEXTURE_CUBE_MAP
+                  : kind == TextureKind::External ? GL_TEXTURE_EXTERNAL_OES
+                                                  : GL_TEXTURE_2D,
+                  texture.id());
     glBindSampler(static_cast<GLuint>(unit), sampler.id());
     return *this;
 }
