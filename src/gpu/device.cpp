@@ -167,10 +167,10 @@ void Device::read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba
                          rgba.begin() + std::ptrdiff_t((h - 1 - y) * row));
 }
 
-std::vector<float> Device::read_texture(const Texture& texture) {
+std::vector<float> Device::read_texture(const Texture& texture, int face) {
     const int w = texture.width(), h = texture.height();
     std::vector<float> out(std::size_t(w) * h * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, texture.framebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, texture.framebuffer(face));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     const TextureFormat f = texture.desc().format;
     if (f == TextureFormat::RG32I) {

@@ -49,7 +49,7 @@ public:
     void read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba);
     // Reads level 0 of a 2D float or integer texture as 4 floats per texel (integers converted as is),
     // rows in GL order (row 0 = t 0). For tests and tools, not for the frame loop.
-    std::vector<float> read_texture(const Texture& texture);
+    std::vector<float> read_texture(const Texture& texture, int face = 0);  // face: of a cube map
     // Waits until the GPU is done: benchmarks time whole passes with it.
     void finish();
 
