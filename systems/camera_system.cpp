@@ -8,8 +8,12 @@ using params::ParamId;
 
 namespace {
 
-bool same_request(const camera::CaptureRequest& a, const camera::CaptureRequest& b) {
-    return a.device == b.device && a.width == b.width && a.height == b.height && a.fps == b.fps && a.format == b.format;
+// Compared field by field each frame, so the steady state builds no strings.
+bool still_requested(const params::Params& p, const camera::CaptureRequest& r) {
+    return p.s(ParamId::environment_camera_device) == r.device && p.i(ParamId::environment_camera_width) == r.width &&
+           p.i(ParamId::environment_camera_height) == r.height &&
+           static_cast<double>(p.f(ParamId::environment_camera_fps)) == r.fps &&
+           camera::parse_format_preference(p.s(ParamId::environment_camera_format)) == r.format;
 }
 
 bool wants_camera(const params::Params& params) { return params.s(ParamId::environment_source) == "camera"; }
@@ -71,15 +75,14 @@ void camera_feed_system(CameraFeed& feed, const params::Params& params, const Fr
         close_feed(feed, env);
         return;
     }
-    const camera::CaptureRequest request = camera_request(params);
-    if (feed.source && !same_request(request, feed.request)) {
-        spdlog::info("camera: settings changed; reopening {}", request.device);
+    if (feed.source && !still_requested(params, feed.request)) {
+        spdlog::info("camera: settings changed; reopening {}", params.s(ParamId::environment_camera_device));
         close_feed(feed, env);
         feed.retry_at = feed.now;
     }
     if (!feed.source) {
         if (feed.now < feed.retry_at) return;
-        try_open(feed, request);
+        try_open(feed, camera_request(params));
         if (!feed.source) return;
     }
     auto polled = feed.source->poll(feed.now);

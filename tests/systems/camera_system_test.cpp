@@ -113,5 +113,41 @@ TEST(CameraFeed, SourceCubemapClosesTheDeviceAndChangedSettingsReopenIt) {
     EXPECT_EQ(rig.dev.live_mappings(), 0);
 }
 
+TEST(CameraFeed, NewestFrameWinsAndASlowCameraNeverStallsTheDisplay) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.dev.max_buffers = 4;
+    rig.engine = make_engine(make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                                          "environment.camera_width=64", "environment.camera_height=36"}),
+                             {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
+    auto frame_of = [&](std::uint8_t luma) {
+        std::vector<std::byte> f(static_cast<std::size_t>(rig.dev.size_image()), std::byte{128});
+        for (std::size_t i = 0; i < f.size(); i += 2) f[i] = std::byte{luma};
+        return FakeFrame{f};
+    };
+    auto centre_luma = [&] {
+        return mean_luma(rig.engine->read_frame(), 30, 20, 66, 34);
+    };
+    // Three frames arrive within one display frame: one upload, the newest (bright) one.
+    const std::uint64_t before = rig.feed().frames;
+    for (std::uint8_t luma : {16, 16, 235}) rig.dev.push_frame(frame_of(luma));
+    ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    EXPECT_EQ(rig.feed().frames, before + 1);
+    const double bright = centre_luma();
+    // No frame for a while: the display goes on, keeping the last picture.
+    for (int i = 0; i < 10; ++i) ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    EXPECT_EQ(rig.feed().frames, before + 1);
+    EXPECT_NE(rig.env().reflection(), nullptr);
+    EXPECT_NEAR(centre_luma(), bright, 12.0) << "the last frame stays (only the rain moves)";
+    // A dark frame then shows at once.
+    rig.dev.push_frame(frame_of(16));
+    ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    EXPECT_LT(centre_luma(), bright - 20);
+}
+
 }  // namespace
 }  // namespace puddle::test
