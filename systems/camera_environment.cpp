@@ -129,6 +129,9 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
                 env.pending_import = import_buffer(device, image, env);
             if (!env.pending_import) {
                 const bool yuyv = image.layout == PixelLayout::Yuyv;
+                if (yuyv && image.stride % 4 != 0)  // GL counts row lengths in whole RGBA8 texels (pixel pairs)
+                    return make_error(ExitCode::Runtime, "camera: YUYV bytesperline {} is not a whole number of pixel pairs",
+                                      image.stride);
                 ensure_texture(device, env.plane0,
                                {.label = "camera plane 0",
                                 .format = yuyv ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::R8,
