@@ -1,13 +1,12 @@
 #include "systems/camera_environment.hpp"
 
 #include <drm_fourcc.h>
+#include <spdlog/spdlog.h>
 
 #include <bit>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-#include <spdlog/spdlog.h>
 
 #include "camera/yuv_matrix.hpp"
 
@@ -18,7 +17,9 @@ using params::ParamId;
 
 namespace {
 
-int mip_count(int size) { return std::bit_width(static_cast<unsigned>(std::max(size, 1))); }
+int mip_count(int size) {
+    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
+}
 
 // Makes `texture` anew only when its shape changes: once per stream, never per frame.
 void ensure_texture(gpu::Device& device, gpu::Texture& texture, const gpu::TextureDesc& desc) {
@@ -37,7 +38,8 @@ void ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int h
                     .mip_levels = mip_count(std::max(width, height))});
 }
 
-const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::CameraImage& image, CameraEnvironment& env) {
+const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::CameraImage& image,
+                                        CameraEnvironment& env) {
     const auto index = static_cast<std::size_t>(image.buffer_index);
     if (index >= env.imported.size()) env.imported.resize(index + 1);  // once per driver buffer
     gpu::ExternalImage& cached = env.imported[index];
@@ -73,25 +75,36 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
     env.zero_copy = env.support.dmabuf_import;
     auto make = [&](const char* label, const char* file, std::vector<std::string> defines,
                     std::vector<std::string> textures, gpu::Pipeline& out) -> Result<void> {
-        auto p = device.create_pipeline(
-            {.label = label, .fragment = file, .defines = std::move(defines), .textures = std::move(textures)});
+        auto p = device.create_pipeline({.label = label,
+                                         .fragment = file,
+                                         .defines = std::move(defines),
+                                         .textures = std::move(textures)});
         if (!p) return p.error();
         out = std::move(p).value();
         return {};
     };
     const std::vector<std::string> planes{"u_plane0", "u_plane1"}, cube{"u_env", "u_camera"};
-    if (auto r = make("camera convert (YUYV)", "camera_convert.frag", {"LAYOUT_YUYV"}, planes, env.convert_yuyv); !r) return r;
-    if (auto r = make("camera convert (NV12)", "camera_convert.frag", {"LAYOUT_NV12"}, planes, env.convert_nv12); !r) return r;
+    if (auto r =
+            make("camera convert (YUYV)", "camera_convert.frag", {"LAYOUT_YUYV"}, planes, env.convert_yuyv);
+        !r)
+        return r;
+    if (auto r =
+            make("camera convert (NV12)", "camera_convert.frag", {"LAYOUT_NV12"}, planes, env.convert_nv12);
+        !r)
+        return r;
     if (env.support.external_sampler) {
-        if (auto r = make("camera convert (external)", "camera_convert.frag", {"EXTERNAL_OES"}, {"u_external"},
-                          env.convert_external);
+        if (auto r = make("camera convert (external)", "camera_convert.frag", {"EXTERNAL_OES"},
+                          {"u_external"}, env.convert_external);
             !r)
             return r;
     }
     if (auto r = make("camera cube (planar)", "camera_cube.frag", {}, cube, env.cube_planar); !r) return r;
-    if (auto r = make("camera cube (mirror ball)", "camera_cube.frag", {"MAPPING_MIRROR_BALL"}, cube, env.cube_mirror_ball); !r)
+    if (auto r = make("camera cube (mirror ball)", "camera_cube.frag", {"MAPPING_MIRROR_BALL"}, cube,
+                      env.cube_mirror_ball);
+        !r)
         return r;
-    env.nearest = device.create_sampler({.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+    env.nearest = device.create_sampler(
+        {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
     env.cube = device.create_texture({.label = "camera environment",
                                       .kind = gpu::TextureKind::Cube,
@@ -102,7 +115,8 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
     return {};
 }
 
-Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image, CameraEnvironment& env) {
+Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image,
+                                 CameraEnvironment& env) {
     if (!env.built) {
         if (auto r = build_camera_pipelines(device, env); !r) {
             env.failed = true;
@@ -129,8 +143,10 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
                 env.pending_import = import_buffer(device, image, env);
             if (!env.pending_import) {
                 const bool yuyv = image.layout == PixelLayout::Yuyv;
-                if (yuyv && image.stride % 4 != 0)  // GL counts row lengths in whole RGBA8 texels (pixel pairs)
-                    return make_error(ExitCode::Runtime, "camera: YUYV bytesperline {} is not a whole number of pixel pairs",
+                if (yuyv &&
+                    image.stride % 4 != 0)  // GL counts row lengths in whole RGBA8 texels (pixel pairs)
+                    return make_error(ExitCode::Runtime,
+                                      "camera: YUYV bytesperline {} is not a whole number of pixel pairs",
                                       image.stride);
                 ensure_texture(device, env.plane0,
                                {.label = "camera plane 0",
@@ -144,7 +160,8 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
                                     .format = gpu::TextureFormat::RG8,
                                     .width = image.width / 2,
                                     .height = image.height / 2});
-                    const auto luma = static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(image.height);
+                    const auto luma =
+                        static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(image.height);
                     env.plane1.upload_rows(image.data.subspan(luma), image.stride);
                 }
             }
@@ -167,8 +184,9 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
     if (env.convert_due) {
         env.convert_due = false;
         const camera::YuvToRgb m = camera::yuv_to_rgb(env.pending.matrix, env.pending.full_range);
-        auto pass = device.begin_pass({.label = "camera convert",
-                                       .target = {.texture = &env.colour, .size = {env.colour.width(), env.colour.height()}}});
+        auto pass = device.begin_pass(
+            {.label = "camera convert",
+             .target = {.texture = &env.colour, .size = {env.colour.width(), env.colour.height()}}});
         if (env.pending_import) {
             pass.set_pipeline(env.convert_external)
                 .set_texture(0, env.pending_import->texture(), env.linear)
@@ -197,7 +215,8 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
     const glm::vec3 right = glm::normalize(glm::cross(axis, glm::vec3(0, 1, 0)));
     const glm::vec3 up = glm::cross(right, axis);
     const bool ball = params.s(ParamId::environment_camera_mapping) == "mirror_ball";
-    const float aspect = static_cast<float>(env.colour.width()) / static_cast<float>(std::max(env.colour.height(), 1));
+    const float aspect =
+        static_cast<float>(env.colour.width()) / static_cast<float>(std::max(env.colour.height(), 1));
     const float tan_half = std::tan(glm::radians(params.f(ParamId::environment_camera_fov)) * 0.5f);
     for (int face = 0; face < 6; ++face) {
         auto pass = device.begin_pass(

@@ -26,15 +26,15 @@ struct CameraEnvironment {
     gpu::Pipeline convert_yuyv, convert_nv12, convert_external, cube_planar, cube_mirror_ball;
     std::vector<gpu::ExternalImage> imported;  // per driver buffer (zero-copy path)
     gpu::ExternalImageSupport support;
-    bool zero_copy = false;       // dmabuf import available: use it for frames that carry a dmabuf
-    bool built = false;           // pipelines made (on first use: most runs never need them)
-    bool failed = false;          // a GPU error disabled the camera environment; the cubemap stays
+    bool zero_copy = false;  // dmabuf import available: use it for frames that carry a dmabuf
+    bool built = false;      // pipelines made (on first use: most runs never need them)
+    bool failed = false;     // a GPU error disabled the camera environment; the cubemap stays
 
     camera::PixelLayout layout = camera::PixelLayout::Rgba;
     camera::CameraImage pending;  // the uploaded frame's description (data not kept)
     bool convert_due = false;     // a frame was uploaded and not yet converted
     const gpu::ExternalImage* pending_import = nullptr;
-    bool has_frame = false;       // colour holds a frame of the current stream
+    bool has_frame = false;  // colour holds a frame of the current stream
     bool cube_due = false;
     std::uint64_t cube_params_revision = 0;
 
@@ -45,7 +45,8 @@ struct CameraEnvironment {
 Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env);
 
 // Input stage: hands one new frame to the GPU (a copy, or an import of its dmabuf). No conversion yet.
-Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image, CameraEnvironment& env);
+Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image,
+                                 CameraEnvironment& env);
 // The stream ended: forget its frames and imports; the puddle goes back to the cubemap.
 void drop_camera_frames(CameraEnvironment& env);
 

@@ -10,13 +10,16 @@ namespace {
 
 // Compared field by field each frame, so the steady state builds no strings.
 bool still_requested(const params::Params& p, const camera::CaptureRequest& r) {
-    return p.s(ParamId::environment_camera_device) == r.device && p.i(ParamId::environment_camera_width) == r.width &&
+    return p.s(ParamId::environment_camera_device) == r.device &&
+           p.i(ParamId::environment_camera_width) == r.width &&
            p.i(ParamId::environment_camera_height) == r.height &&
            static_cast<double>(p.f(ParamId::environment_camera_fps)) == r.fps &&
            camera::parse_format_preference(p.s(ParamId::environment_camera_format)) == r.format;
 }
 
-bool wants_camera(const params::Params& params) { return params.s(ParamId::environment_source) == "camera"; }
+bool wants_camera(const params::Params& params) {
+    return params.s(ParamId::environment_source) == "camera";
+}
 
 void close_feed(CameraFeed& feed, CameraEnvironment& env) {
     drop_camera_frames(env);
@@ -29,7 +32,8 @@ void try_open(CameraFeed& feed, const camera::CaptureRequest& request) {
     auto opened = camera::open_camera_source(*feed.io, request);
     if (!opened) {
         if (opened.error().message != feed.last_failure)
-            spdlog::warn("{}; reflecting the cubemap, retrying every {:g} s", opened.error().message, camera_retry_seconds);
+            spdlog::warn("{}; reflecting the cubemap, retrying every {:g} s", opened.error().message,
+                         camera_retry_seconds);
         else
             spdlog::debug("{}", opened.error().message);
         feed.last_failure = opened.error().message;
@@ -71,7 +75,8 @@ void camera_feed_system(CameraFeed& feed, const params::Params& params, const Fr
                         gpu::Device& device, CameraEnvironment& env) {
     feed.now += clock.frame_dt;
     if (!wants_camera(params)) {
-        if (feed.source) spdlog::info("camera: environment.source = cubemap; closing {}", feed.request.device);
+        if (feed.source)
+            spdlog::info("camera: environment.source = cubemap; closing {}", feed.request.device);
         close_feed(feed, env);
         return;
     }
@@ -88,7 +93,8 @@ void camera_feed_system(CameraFeed& feed, const params::Params& params, const Fr
     auto polled = feed.source->poll(feed.now);
     if (!polled) {
         ++feed.losses;
-        spdlog::warn("{}; back to the cubemap, retrying every {:g} s", polled.error().message, camera_retry_seconds);
+        spdlog::warn("{}; back to the cubemap, retrying every {:g} s", polled.error().message,
+                     camera_retry_seconds);
         feed.last_failure = polled.error().message;
         close_feed(feed, env);
         feed.retry_at = feed.now + camera_retry_seconds;
@@ -96,7 +102,8 @@ void camera_feed_system(CameraFeed& feed, const params::Params& params, const Fr
     }
     if (!*polled) return;
     ++feed.frames;
-    if (auto r = upload_camera_frame(device, **polled, env); !r) spdlog::error("{}; reflecting the cubemap", r.error().message);
+    if (auto r = upload_camera_frame(device, **polled, env); !r)
+        spdlog::error("{}; reflecting the cubemap", r.error().message);
 }
 
 }  // namespace puddle::systems

@@ -24,9 +24,9 @@ struct CameraFeed {
     camera::CaptureRequest request;  // what the open source was opened with
     double now = 0.0;                // frame-loop time, seconds
     double retry_at = 0.0;
-    std::string last_failure;        // said once; repeats go to the debug log
-    std::uint64_t frames = 0;        // delivered since start-up
-    std::uint64_t losses = 0;        // times a streaming source went away
+    std::string last_failure;  // said once; repeats go to the debug log
+    std::uint64_t frames = 0;  // delivered since start-up
+    std::uint64_t losses = 0;  // times a streaming source went away
     bool streaming() const { return source != nullptr; }
 };
 

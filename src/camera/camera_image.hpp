@@ -19,12 +19,12 @@ enum class YuvMatrix { Bt601, Bt709, Bt2020 };
 struct CameraImage {
     PixelLayout layout = PixelLayout::Rgba;
     int width = 0, height = 0;
-    int stride = 0;  // bytes per row of the first plane (the driver's bytesperline)
+    int stride = 0;                   // bytes per row of the first plane (the driver's bytesperline)
     std::span<const std::byte> data;  // every plane, as the driver laid them out (NV12: UV after height rows)
     YuvMatrix matrix = YuvMatrix::Bt601;
-    bool full_range = false;  // false: Y in 16..235, UV in 16..240 (limited, "video" range)
-    int dmabuf_fd = -1;       // >= 0 where the buffer was exported (VIDIOC_EXPBUF): zero-copy import
-    int buffer_index = -1;    // which driver buffer: EGLImages are cached per buffer
+    bool full_range = false;     // false: Y in 16..235, UV in 16..240 (limited, "video" range)
+    int dmabuf_fd = -1;          // >= 0 where the buffer was exported (VIDIOC_EXPBUF): zero-copy import
+    int buffer_index = -1;       // which driver buffer: EGLImages are cached per buffer
     std::uint64_t sequence = 0;  // counts frames delivered by this source
 };
 

@@ -1,10 +1,9 @@
 #include "camera/format_negotiation.hpp"
 
+#include <fmt/format.h>
 #include <linux/videodev2.h>
 
 #include <array>
-
-#include <fmt/format.h>
 
 namespace puddle::camera {
 
@@ -41,8 +40,9 @@ std::vector<OfferedFormat> enumerate_formats(V4l2Io& io, int fd) {
             if (size.type == V4L2_FRMSIZE_TYPE_DISCRETE) {
                 f.sizes.push_back(fmt::format("{}x{}", size.discrete.width, size.discrete.height));
             } else {
-                f.sizes.push_back(fmt::format("{}x{} to {}x{}", size.stepwise.min_width, size.stepwise.min_height,
-                                              size.stepwise.max_width, size.stepwise.max_height));
+                f.sizes.push_back(fmt::format("{}x{} to {}x{}", size.stepwise.min_width,
+                                              size.stepwise.min_height, size.stepwise.max_width,
+                                              size.stepwise.max_height));
                 break;  // one range describes them all
             }
         }
@@ -51,13 +51,22 @@ std::vector<OfferedFormat> enumerate_formats(V4l2Io& io, int fd) {
     return offered;
 }
 
-std::optional<std::uint32_t> choose_format(const std::vector<OfferedFormat>& offered, FormatPreference preference) {
+std::optional<std::uint32_t> choose_format(const std::vector<OfferedFormat>& offered,
+                                           FormatPreference preference) {
     std::vector<std::uint32_t> wanted;
     switch (preference) {
-        case FormatPreference::Auto: wanted = {V4L2_PIX_FMT_NV12, V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG}; break;
-        case FormatPreference::Yuyv: wanted = {V4L2_PIX_FMT_YUYV}; break;
-        case FormatPreference::Nv12: wanted = {V4L2_PIX_FMT_NV12}; break;
-        case FormatPreference::Mjpeg: wanted = {V4L2_PIX_FMT_MJPEG}; break;
+        case FormatPreference::Auto:
+            wanted = {V4L2_PIX_FMT_NV12, V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
+            break;
+        case FormatPreference::Yuyv:
+            wanted = {V4L2_PIX_FMT_YUYV};
+            break;
+        case FormatPreference::Nv12:
+            wanted = {V4L2_PIX_FMT_NV12};
+            break;
+        case FormatPreference::Mjpeg:
+            wanted = {V4L2_PIX_FMT_MJPEG};
+            break;
     }
     for (std::uint32_t w : wanted)
         for (const OfferedFormat& f : offered)

@@ -26,7 +26,8 @@ std::string fourcc_name(std::uint32_t fourcc);
 // Everything the device at fd offers; empty when it enumerates nothing.
 std::vector<OfferedFormat> enumerate_formats(V4l2Io& io, int fd);
 // The first offered format the preference accepts, or nothing.
-std::optional<std::uint32_t> choose_format(const std::vector<OfferedFormat>& offered, FormatPreference preference);
+std::optional<std::uint32_t> choose_format(const std::vector<OfferedFormat>& offered,
+                                           FormatPreference preference);
 // "YUYV 640x480, 1280x720; H264 1920x1080", or "nothing" for an empty list.
 std::string describe_offer(const std::vector<OfferedFormat>& offered);
 

@@ -1,9 +1,9 @@
 #include "camera/mjpeg_decoder.hpp"
 
+#include <jpeglib.h>
+
 #include <csetjmp>
 #include <cstdio>
-
-#include <jpeglib.h>
 
 namespace puddle::camera {
 
@@ -32,21 +32,26 @@ Result<void> MjpegDecoder::decode(std::span<const std::byte> jpeg, int expected_
     info.err = jpeg_std_error(&errors.base);
     errors.base.error_exit = on_error;
     errors.base.output_message = ignore_message;
-    const std::size_t needed = static_cast<std::size_t>(expected_width) * static_cast<std::size_t>(expected_height) * 4;
+    const std::size_t needed =
+        static_cast<std::size_t>(expected_width) * static_cast<std::size_t>(expected_height) * 4;
     if (rgba_.size() != needed) rgba_.resize(needed);  // once per negotiated size
     if (setjmp(errors.jump)) {
         jpeg_destroy_decompress(&info);
-        return make_error(ExitCode::Runtime, "camera: MJPEG frame ({} bytes): {}", jpeg.size(), errors.message);
+        return make_error(ExitCode::Runtime, "camera: MJPEG frame ({} bytes): {}", jpeg.size(),
+                          errors.message);
     }
     jpeg_create_decompress(&info);
-    jpeg_mem_src(&info, reinterpret_cast<const unsigned char*>(jpeg.data()), static_cast<unsigned long>(jpeg.size()));
+    jpeg_mem_src(&info, reinterpret_cast<const unsigned char*>(jpeg.data()),
+                 static_cast<unsigned long>(jpeg.size()));
     jpeg_read_header(&info, TRUE);
     info.out_color_space = JCS_EXT_RGBA;
     jpeg_start_decompress(&info);
-    if (static_cast<int>(info.output_width) != expected_width || static_cast<int>(info.output_height) != expected_height) {
+    if (static_cast<int>(info.output_width) != expected_width ||
+        static_cast<int>(info.output_height) != expected_height) {
         const unsigned w = info.output_width, h = info.output_height;
         jpeg_destroy_decompress(&info);
-        return make_error(ExitCode::Runtime, "camera: MJPEG frame is {}x{}, the stream was negotiated at {}x{}", w, h,
+        return make_error(ExitCode::Runtime,
+                          "camera: MJPEG frame is {}x{}, the stream was negotiated at {}x{}", w, h,
                           expected_width, expected_height);
     }
     const std::size_t row = static_cast<std::size_t>(expected_width) * 4;

@@ -1,11 +1,11 @@
 // CameraSource "mock:PATH": one image, or a folder of images played in a loop at the requested frame
 // rate, paced by the frame loop's time (so headless runs are repeatable). Stands in for a camera in
 // the end-to-end test and on machines without one.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "assets/image_io.hpp"
 #include "camera/camera_source.hpp"
@@ -24,7 +24,8 @@ public:
         if (delivered_ && tick == last_tick_) return std::optional<CameraImage>{};
         delivered_ = true;
         last_tick_ = tick;
-        const assets::Image& f = frames_[static_cast<std::size_t>(tick % static_cast<std::int64_t>(frames_.size()))];
+        const assets::Image& f =
+            frames_[static_cast<std::size_t>(tick % static_cast<std::int64_t>(frames_.size()))];
         return std::optional<CameraImage>(CameraImage{.layout = PixelLayout::Rgba,
                                                       .width = f.width,
                                                       .height = f.height,
@@ -58,7 +59,8 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
         for (const auto& entry : fs::directory_iterator(path, ec))
             if (entry.is_regular_file()) files.push_back(entry.path().string());
         std::sort(files.begin(), files.end());
-        if (files.empty()) return make_error(ExitCode::Asset, "camera: mock:{}: the folder holds no images", path);
+        if (files.empty())
+            return make_error(ExitCode::Asset, "camera: mock:{}: the folder holds no images", path);
     } else {
         files.push_back(path);
     }
@@ -67,11 +69,13 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
         auto image = assets::read_image(file);
         if (!image) return make_error(ExitCode::Asset, "camera: mock: {}", image.error().message);
         if (!frames.empty() && (image->width != frames[0].width || image->height != frames[0].height))
-            return make_error(ExitCode::Asset, "camera: mock:{}: {} is {}x{}, the first image is {}x{}; all must match",
-                              path, file, image->width, image->height, frames[0].width, frames[0].height);
+            return make_error(ExitCode::Asset,
+                              "camera: mock:{}: {} is {}x{}, the first image is {}x{}; all must match", path,
+                              file, image->width, image->height, frames[0].width, frames[0].height);
         frames.push_back(std::move(image).value());
     }
-    return std::unique_ptr<CameraSource>(std::make_unique<MockSource>(std::move(frames), path, std::max(fps, 0.1)));
+    return std::unique_ptr<CameraSource>(
+        std::make_unique<MockSource>(std::move(frames), path, std::max(fps, 0.1)));
 }
 
 }  // namespace puddle::camera

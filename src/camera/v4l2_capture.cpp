@@ -17,10 +17,13 @@ YuvMatrix matrix_of(const v4l2_pix_format& f) {
     if (enc == V4L2_YCBCR_ENC_DEFAULT) enc = static_cast<unsigned>(V4L2_MAP_YCBCR_ENC_DEFAULT(f.colorspace));
     switch (enc) {
         case V4L2_YCBCR_ENC_709:
-        case V4L2_YCBCR_ENC_XV709: return YuvMatrix::Bt709;
+        case V4L2_YCBCR_ENC_XV709:
+            return YuvMatrix::Bt709;
         case V4L2_YCBCR_ENC_BT2020:
-        case V4L2_YCBCR_ENC_BT2020_CONST_LUM: return YuvMatrix::Bt2020;
-        default: return YuvMatrix::Bt601;
+        case V4L2_YCBCR_ENC_BT2020_CONST_LUM:
+            return YuvMatrix::Bt2020;
+        default:
+            return YuvMatrix::Bt601;
     }
 }
 
@@ -61,14 +64,15 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
                           std::strerror(errno));
     const std::uint32_t caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps : cap.capabilities;
     if (!(caps & V4L2_CAP_VIDEO_CAPTURE) || !(caps & V4L2_CAP_STREAMING))
-        return make_error(ExitCode::Runtime, "camera: {}: not a video capture device with streaming I/O", r.device);
+        return make_error(ExitCode::Runtime, "camera: {}: not a video capture device with streaming I/O",
+                          r.device);
 
     const std::vector<OfferedFormat> offered = enumerate_formats(io, fd);
     const auto chosen = choose_format(offered, r.format);
     if (!chosen)
         return make_error(ExitCode::Runtime,
                           "camera: {}: no format puddle can read ({}); the device offers: {}", r.device,
-                          r.format == FormatPreference::Auto ? "NV12, YUYV or MJPG"
+                          r.format == FormatPreference::Auto   ? "NV12, YUYV or MJPG"
                           : r.format == FormatPreference::Yuyv ? "YUYV was asked for"
                           : r.format == FormatPreference::Nv12 ? "NV12 was asked for"
                                                                : "MJPG was asked for",
@@ -86,8 +90,9 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
     // The driver may change anything; what it wrote back is the truth.
     const v4l2_pix_format& pix = fmt.fmt.pix;
     if (pix.pixelformat != *chosen)
-        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_S_FMT: asked for {}, the driver gave {}; it offers: {}",
-                          r.device, fourcc_name(*chosen), fourcc_name(pix.pixelformat), describe_offer(offered));
+        return make_error(
+            ExitCode::Runtime, "camera: {}: VIDIOC_S_FMT: asked for {}, the driver gave {}; it offers: {}",
+            r.device, fourcc_name(*chosen), fourcc_name(pix.pixelformat), describe_offer(offered));
     c.fourcc_ = pix.pixelformat;
     c.format_ = CameraImage{.layout = layout_of(pix.pixelformat),
                             .width = static_cast<int>(pix.width),
@@ -98,7 +103,8 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
     if (c.format_.stride == 0)  // compressed formats and a few drivers leave it 0
         c.format_.stride = static_cast<int>(pix.width) * (pix.pixelformat == V4L2_PIX_FMT_YUYV ? 2 : 1);
     if (pix.width == 0 || pix.height == 0)
-        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_S_FMT: the driver gave an empty size", r.device);
+        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_S_FMT: the driver gave an empty size",
+                          r.device);
 
     // Frame rate: a request; drivers without it keep their own pace.
     v4l2_streamparm parm{};
@@ -114,10 +120,12 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
     req.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     req.memory = V4L2_MEMORY_MMAP;
     if (xioctl(io, fd, VIDIOC_REQBUFS, &req) != 0)
-        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_REQBUFS: {}", r.device, std::strerror(errno));
+        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_REQBUFS: {}", r.device,
+                          std::strerror(errno));
     if (req.count < 2)  // one buffer would be written while we read it
-        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_REQBUFS: the driver granted {} buffer(s), need 2",
-                          r.device, req.count);
+        return make_error(ExitCode::Runtime,
+                          "camera: {}: VIDIOC_REQBUFS: the driver granted {} buffer(s), need 2", r.device,
+                          req.count);
     c.buffers_.resize(req.count);
     for (std::uint32_t i = 0; i < req.count; ++i) {
         v4l2_buffer buf{};
@@ -125,10 +133,13 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
         buf.memory = V4L2_MEMORY_MMAP;
         buf.index = i;
         if (xioctl(io, fd, VIDIOC_QUERYBUF, &buf) != 0)
-            return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_QUERYBUF {}: {}", r.device, i, std::strerror(errno));
-        void* p = io.mmap(buf.length, PROT_READ | PROT_WRITE, MAP_SHARED, fd, static_cast<off_t>(buf.m.offset));
+            return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_QUERYBUF {}: {}", r.device, i,
+                              std::strerror(errno));
+        void* p =
+            io.mmap(buf.length, PROT_READ | PROT_WRITE, MAP_SHARED, fd, static_cast<off_t>(buf.m.offset));
         if (p == MAP_FAILED)
-            return make_error(ExitCode::Runtime, "camera: {}: mmap buffer {}: {}", r.device, i, std::strerror(errno));
+            return make_error(ExitCode::Runtime, "camera: {}: mmap buffer {}: {}", r.device, i,
+                              std::strerror(errno));
         c.buffers_[i].memory = Mapping(io, p, buf.length);
         if (r.export_dmabuf) {
             v4l2_exportbuffer exp{};
@@ -142,7 +153,8 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
         if (auto q = c.queue(static_cast<int>(i)); !q) return q.error();
     v4l2_buf_type type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     if (xioctl(io, fd, VIDIOC_STREAMON, &type) != 0)
-        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_STREAMON: {}", r.device, std::strerror(errno));
+        return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_STREAMON: {}", r.device,
+                          std::strerror(errno));
     c.streaming_ = true;
     return c;
 }
@@ -163,7 +175,9 @@ V4l2Capture& V4l2Capture::operator=(V4l2Capture&& o) noexcept {
     return *this;
 }
 
-V4l2Capture::~V4l2Capture() { release(); }
+V4l2Capture::~V4l2Capture() {
+    release();
+}
 
 void V4l2Capture::release() {
     if (fd_ && streaming_) {
@@ -200,7 +214,9 @@ Result<std::optional<CapturedBuffer>> V4l2Capture::poll() {
     if (n < 0) return make_error(ExitCode::Runtime, "camera: {}: poll: {}", path_, std::strerror(errno));
     if (p.revents & (POLLERR | POLLHUP | POLLNVAL))
         return make_error(ExitCode::Runtime, "camera: {}: the device went away (poll: {})", path_,
-                          (p.revents & POLLHUP) ? "POLLHUP" : (p.revents & POLLNVAL) ? "POLLNVAL" : "POLLERR");
+                          (p.revents & POLLHUP)    ? "POLLHUP"
+                          : (p.revents & POLLNVAL) ? "POLLNVAL"
+                                                   : "POLLERR");
     if (!(p.revents & POLLIN)) return std::optional<CapturedBuffer>{};
 
     // Drain the queue: the newest frame wins, older ones go straight back to the driver.
@@ -215,7 +231,8 @@ Result<std::optional<CapturedBuffer>> V4l2Capture::poll() {
         }
         const int index = static_cast<int>(buf.index);
         if (index < 0 || static_cast<std::size_t>(index) >= buffers_.size())
-            return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_DQBUF: buffer index {} out of range", path_, index);
+            return make_error(ExitCode::Runtime, "camera: {}: VIDIOC_DQBUF: buffer index {} out of range",
+                              path_, index);
         const Mapping& memory = buffers_[static_cast<std::size_t>(index)].memory;
         const std::size_t used = std::min<std::size_t>(buf.bytesused, memory.size());
         const bool broken = (buf.flags & V4L2_BUF_FLAG_ERROR) || used < minimum_payload(format_, fourcc_);

@@ -1,7 +1,6 @@
 // CameraSource over a V4L2 device: the capture state machine plus MJPEG decoding.
-#include <linux/videodev2.h>
-
 #include <fmt/format.h>
+#include <linux/videodev2.h>
 #include <spdlog/spdlog.h>
 
 #include "camera/camera_source.hpp"
@@ -13,7 +12,8 @@ namespace {
 
 class V4l2Source final : public CameraSource {
 public:
-    V4l2Source(V4l2Capture capture, std::string device) : capture_(std::move(capture)), device_(std::move(device)) {}
+    V4l2Source(V4l2Capture capture, std::string device)
+        : capture_(std::move(capture)), device_(std::move(device)) {}
 
     Result<std::optional<CameraImage>> poll(double) override {
         auto polled = capture_.poll();
@@ -42,8 +42,11 @@ public:
     std::string describe() const override {
         const CameraImage& f = capture_.format();
         return fmt::format("{}: {} {}x{} ({} bytes per row, {} buffers, {} {} range)", device_,
-                           fourcc_name(capture_.fourcc()), f.width, f.height, f.stride, capture_.buffer_count(),
-                           f.matrix == YuvMatrix::Bt709 ? "BT.709" : f.matrix == YuvMatrix::Bt2020 ? "BT.2020" : "BT.601",
+                           fourcc_name(capture_.fourcc()), f.width, f.height, f.stride,
+                           capture_.buffer_count(),
+                           f.matrix == YuvMatrix::Bt709    ? "BT.709"
+                           : f.matrix == YuvMatrix::Bt2020 ? "BT.2020"
+                                                           : "BT.601",
                            f.full_range ? "full" : "limited");
     }
 
@@ -60,14 +63,15 @@ private:
 Result<std::unique_ptr<CameraSource>> open_v4l2_source(V4l2Io& io, const CaptureRequest& request) {
     auto capture = V4l2Capture::open(io, request);
     if (!capture) return capture.error();
-    return std::unique_ptr<CameraSource>(std::make_unique<V4l2Source>(std::move(capture).value(), request.device));
+    return std::unique_ptr<CameraSource>(
+        std::make_unique<V4l2Source>(std::move(capture).value(), request.device));
 }
 
 Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request) {
     constexpr std::string_view mock = "mock:";
-    if (request.device.starts_with(mock)) return open_mock_source(request.device.substr(mock.size()), request.fps);
+    if (request.device.starts_with(mock))
+        return open_mock_source(request.device.substr(mock.size()), request.fps);
     return open_v4l2_source(io, request);
 }
 
 }  // namespace puddle::camera
-

@@ -17,7 +17,8 @@ YuvToRgb yuv_to_rgb(YuvMatrix m, bool full_range) {
     const float cr_g = -2.0f * kr * (1.0f - kr) / kg * c_scale;
     YuvToRgb out;
     // Column-major: columns are the Y, Cb and Cr contributions.
-    out.matrix = glm::mat3(glm::vec3(y_scale, y_scale, y_scale), glm::vec3(0.0f, cb_g, cb_b), glm::vec3(cr_r, cr_g, 0.0f));
+    out.matrix = glm::mat3(glm::vec3(y_scale, y_scale, y_scale), glm::vec3(0.0f, cb_g, cb_b),
+                           glm::vec3(cr_r, cr_g, 0.0f));
     out.offset = glm::vec3(full_range ? 0.0f : 16.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f);
     return out;
 }

@@ -25,7 +25,8 @@ const ImageEntryPoints& entry_points() {
     static const ImageEntryPoints table{
         reinterpret_cast<PFNEGLCREATEIMAGEKHRPROC>(eglGetProcAddress("eglCreateImageKHR")),
         reinterpret_cast<PFNEGLDESTROYIMAGEKHRPROC>(eglGetProcAddress("eglDestroyImageKHR")),
-        reinterpret_cast<PFNGLEGLIMAGETARGETTEXTURE2DOESPROC>(eglGetProcAddress("glEGLImageTargetTexture2DOES"))};
+        reinterpret_cast<PFNGLEGLIMAGETARGETTEXTURE2DOESPROC>(
+            eglGetProcAddress("glEGLImageTargetTexture2DOES"))};
     return table;
 }
 
@@ -39,13 +40,20 @@ bool has_word(const char* list, const char* word) {
 
 const char* egl_error_text(EGLint e) {
     switch (e) {
-        case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-        case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-        case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-        case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-        case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-        case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-        default: return "EGL error";
+        case EGL_BAD_MATCH:
+            return "EGL_BAD_MATCH";
+        case EGL_BAD_PARAMETER:
+            return "EGL_BAD_PARAMETER";
+        case EGL_BAD_ACCESS:
+            return "EGL_BAD_ACCESS";
+        case EGL_BAD_ALLOC:
+            return "EGL_BAD_ALLOC";
+        case EGL_BAD_DISPLAY:
+            return "EGL_BAD_DISPLAY";
+        case EGL_BAD_CONTEXT:
+            return "EGL_BAD_CONTEXT";
+        default:
+            return "EGL error";
     }
 }
 
@@ -60,7 +68,8 @@ ExternalImageSupport probe_external_image_support() {
     GLint n = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &n);
     for (GLint i = 0; i < n; ++i)
-        if (const auto* x = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i))))
+        if (const auto* x =
+                reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i))))
             if (std::strcmp(x, "GL_OES_EGL_image_external_essl3") == 0) s.external_sampler = entry;
     s.dmabuf_import = s.external_sampler && has_word(egl, "EGL_EXT_image_dma_buf_import");
     s.texture_images = s.external_sampler && has_word(egl, "EGL_KHR_gl_texture_2D_image");
@@ -68,7 +77,8 @@ ExternalImageSupport probe_external_image_support() {
 }
 
 ExternalImage::ExternalImage(ExternalImage&& o) noexcept
-    : display_(std::exchange(o.display_, nullptr)), image_(std::exchange(o.image_, nullptr)),
+    : display_(std::exchange(o.display_, nullptr)),
+      image_(std::exchange(o.image_, nullptr)),
       texture_(std::move(o.texture_)) {}
 
 ExternalImage& ExternalImage::operator=(ExternalImage&& o) noexcept {
@@ -81,7 +91,9 @@ ExternalImage& ExternalImage::operator=(ExternalImage&& o) noexcept {
     return *this;
 }
 
-ExternalImage::~ExternalImage() { reset(); }
+ExternalImage::~ExternalImage() {
+    reset();
+}
 
 void ExternalImage::reset() {
     texture_ = Texture();  // the texture lets go of the image first
@@ -92,21 +104,32 @@ void ExternalImage::reset() {
 Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& desc) {
     const ImageEntryPoints& e = entry_points();
     if (!e.create || !e.destroy || !e.target_texture)
-        return make_error(ExitCode::Runtime, "gpu: external image '{}': EGL image entry points missing", desc.label);
+        return make_error(ExitCode::Runtime, "gpu: external image '{}': EGL image entry points missing",
+                          desc.label);
     const EGLDisplay display = eglGetCurrentDisplay();
     EGLImage image = EGL_NO_IMAGE_KHR;
     if (desc.source) {
         const EGLint attribs[] = {EGL_GL_TEXTURE_LEVEL_KHR, 0, EGL_NONE};
         image = e.create(display, eglGetCurrentContext(), EGL_GL_TEXTURE_2D_KHR,
-                         reinterpret_cast<EGLClientBuffer>(static_cast<std::uintptr_t>(desc.source->id())), attribs);
+                         reinterpret_cast<EGLClientBuffer>(static_cast<std::uintptr_t>(desc.source->id())),
+                         attribs);
     } else {
-        std::vector<EGLint> a = {EGL_WIDTH, desc.width, EGL_HEIGHT, desc.height, EGL_LINUX_DRM_FOURCC_EXT,
+        std::vector<EGLint> a = {EGL_WIDTH,
+                                 desc.width,
+                                 EGL_HEIGHT,
+                                 desc.height,
+                                 EGL_LINUX_DRM_FOURCC_EXT,
                                  static_cast<EGLint>(desc.drm_fourcc),
-                                 EGL_YUV_COLOR_SPACE_HINT_EXT, desc.bt709 ? EGL_ITU_REC709_EXT : EGL_ITU_REC601_EXT,
-                                 EGL_SAMPLE_RANGE_HINT_EXT, desc.full_range ? EGL_YUV_FULL_RANGE_EXT : EGL_YUV_NARROW_RANGE_EXT,
-                                 EGL_DMA_BUF_PLANE0_FD_EXT, desc.planes[0].fd,
-                                 EGL_DMA_BUF_PLANE0_OFFSET_EXT, static_cast<EGLint>(desc.planes[0].offset),
-                                 EGL_DMA_BUF_PLANE0_PITCH_EXT, static_cast<EGLint>(desc.planes[0].pitch)};
+                                 EGL_YUV_COLOR_SPACE_HINT_EXT,
+                                 desc.bt709 ? EGL_ITU_REC709_EXT : EGL_ITU_REC601_EXT,
+                                 EGL_SAMPLE_RANGE_HINT_EXT,
+                                 desc.full_range ? EGL_YUV_FULL_RANGE_EXT : EGL_YUV_NARROW_RANGE_EXT,
+                                 EGL_DMA_BUF_PLANE0_FD_EXT,
+                                 desc.planes[0].fd,
+                                 EGL_DMA_BUF_PLANE0_OFFSET_EXT,
+                                 static_cast<EGLint>(desc.planes[0].offset),
+                                 EGL_DMA_BUF_PLANE0_PITCH_EXT,
+                                 static_cast<EGLint>(desc.planes[0].pitch)};
         if (desc.planes[1].fd >= 0) {
             a.insert(a.end(), {EGL_DMA_BUF_PLANE1_FD_EXT, desc.planes[1].fd, EGL_DMA_BUF_PLANE1_OFFSET_EXT,
                                static_cast<EGLint>(desc.planes[1].offset), EGL_DMA_BUF_PLANE1_PITCH_EXT,

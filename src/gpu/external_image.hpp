@@ -13,9 +13,9 @@ namespace puddle::gpu {
 
 // What the current EGL display and GL context can import.
 struct ExternalImageSupport {
-    bool external_sampler = false;   // GL_OES_EGL_image_external_essl3
-    bool dmabuf_import = false;      // EGL_EXT_image_dma_buf_import
-    bool texture_images = false;     // EGL_KHR_gl_texture_2D_image
+    bool external_sampler = false;  // GL_OES_EGL_image_external_essl3
+    bool dmabuf_import = false;     // EGL_EXT_image_dma_buf_import
+    bool texture_images = false;    // EGL_KHR_gl_texture_2D_image
 };
 ExternalImageSupport probe_external_image_support();
 
@@ -30,8 +30,8 @@ struct ExternalImageDesc {
     std::uint32_t drm_fourcc = 0;  // DRM_FORMAT_YUYV, DRM_FORMAT_NV12
     int width = 0, height = 0;
     DmabufPlane planes[2];
-    bool bt709 = false;      // EGL_YUV_COLOR_SPACE_HINT_EXT
-    bool full_range = false; // EGL_SAMPLE_RANGE_HINT_EXT
+    bool bt709 = false;       // EGL_YUV_COLOR_SPACE_HINT_EXT
+    bool full_range = false;  // EGL_SAMPLE_RANGE_HINT_EXT
     // ... or a GL texture of this context (level 0).
     const Texture* source = nullptr;
 };

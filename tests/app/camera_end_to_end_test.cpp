@@ -1,11 +1,10 @@
 // The binary with a mock camera (`--camera mock:PATH`): it reflects the known image, the right way round.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <string>
-
-#include <sys/wait.h>
 
 #include "assets/image_io.hpp"
 #include "support/test_support.hpp"
@@ -69,12 +68,15 @@ TEST(CameraEndToEnd, MockCameraIsReflectedTheRightWayRound) {
 
     // The water in the middle of the picture reflects the room: left of centre red, right of it blue.
     const int y0 = 35, y1 = 65;
-    const double left_red = mean_channel(*cam, 0, 30, y0, 70, y1), left_blue = mean_channel(*cam, 2, 30, y0, 70, y1);
-    const double right_red = mean_channel(*cam, 0, 90, y0, 130, y1), right_blue = mean_channel(*cam, 2, 90, y0, 130, y1);
+    const double left_red = mean_channel(*cam, 0, 30, y0, 70, y1),
+                 left_blue = mean_channel(*cam, 2, 30, y0, 70, y1);
+    const double right_red = mean_channel(*cam, 0, 90, y0, 130, y1),
+                 right_blue = mean_channel(*cam, 2, 90, y0, 130, y1);
     EXPECT_GT(left_red, left_blue + 15) << "left " << left_red << " red, " << left_blue << " blue";
     EXPECT_GT(right_blue, right_red + 15) << "right " << right_red << " red, " << right_blue << " blue";
     // Without the camera the same water shows the night sky: no such colours.
-    const double sky_left_red = mean_channel(*sky, 0, 30, y0, 70, y1), sky_left_blue = mean_channel(*sky, 2, 30, y0, 70, y1);
+    const double sky_left_red = mean_channel(*sky, 0, 30, y0, 70, y1),
+                 sky_left_blue = mean_channel(*sky, 2, 30, y0, 70, y1);
     EXPECT_LT(sky_left_red, sky_left_blue + 5);
 }
 
@@ -83,7 +85,10 @@ TEST(CameraEndToEnd, BlendZeroLooksLikeTheCubemap) {
     const std::string room = write_room(dir);
     const std::string with = (dir / "blend0.png").string(), without = (dir / "sky.png").string();
     const std::string common = "-b headless --size 160x90 --frames 4 --seed 3 ";
-    ASSERT_EQ(run_puddle(common + "--camera mock:" + room + " --set environment.camera_blend=0 --screenshot " + with).exit_code, 0);
+    ASSERT_EQ(run_puddle(common + "--camera mock:" + room +
+                         " --set environment.camera_blend=0 --screenshot " + with)
+                  .exit_code,
+              0);
     ASSERT_EQ(run_puddle(common + "--screenshot " + without).exit_code, 0);
     auto a = assets::read_image(with), b = assets::read_image(without);
     ASSERT_TRUE(a && b);
@@ -102,10 +107,13 @@ TEST(CameraEndToEnd, MissingMockImageExitsThree) {
 TEST(CameraEndToEnd, NoCameraDeviceWarnsAndRendersTheCubemap) {
     TempDir dir;
     const std::string png = (dir / "out.png").string();
-    const Outcome r = run_puddle("-b headless --size 96x54 --frames 3 --camera /dev/puddle-no-such-camera --screenshot " + png);
+    const Outcome r = run_puddle(
+        "-b headless --size 96x54 --frames 3 --camera /dev/puddle-no-such-camera --screenshot " + png);
     EXPECT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_NE(r.output.find("camera: /dev/puddle-no-such-camera: open: No such file or directory; reflecting the cubemap"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find(
+            "camera: /dev/puddle-no-such-camera: open: No such file or directory; reflecting the cubemap"),
+        std::string::npos)
         << r.output;
 }
 

@@ -17,7 +17,8 @@ int FakeV4l2Device::fail(int err) {
 }
 
 int FakeV4l2Device::queued_buffers() const {
-    return static_cast<int>(std::count_if(buffers_.begin(), buffers_.end(), [](const Buffer& b) { return b.queued; }));
+    return static_cast<int>(
+        std::count_if(buffers_.begin(), buffers_.end(), [](const Buffer& b) { return b.queued; }));
 }
 
 int FakeV4l2Device::open(const char* p, int) {
@@ -92,11 +93,14 @@ int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
         case VIDIOC_S_FMT: {
             if (streaming_ || !buffers_.empty()) return fail(EBUSY);
             auto& pix = static_cast<v4l2_format*>(arg)->fmt.pix;
-            auto f = std::find_if(formats.begin(), formats.end(), [&](const FakeFormat& x) { return x.fourcc == pix.pixelformat; });
+            auto f = std::find_if(formats.begin(), formats.end(),
+                                  [&](const FakeFormat& x) { return x.fourcc == pix.pixelformat; });
             if (f == formats.end()) f = formats.begin();  // drivers substitute rather than fail
             // The nearest size it has, by area difference.
             auto nearest = *std::min_element(f->sizes.begin(), f->sizes.end(), [&](auto a, auto b) {
-                auto d = [&](std::pair<int, int> s) { return std::abs(s.first * s.second - int(pix.width * pix.height)); };
+                auto d = [&](std::pair<int, int> s) {
+                    return std::abs(s.first * s.second - int(pix.width * pix.height));
+                };
                 return d(a) < d(b);
             });
             fourcc_ = f->fourcc;
@@ -128,7 +132,8 @@ int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
             p->parm.capture.timeperframe = {1, 30};
             return 0;
         }
-        case VIDIOC_S_PARM: return 0;
+        case VIDIOC_S_PARM:
+            return 0;
         case VIDIOC_REQBUFS: {
             auto* r = static_cast<v4l2_requestbuffers*>(arg);
             if (r->memory != V4L2_MEMORY_MMAP) return fail(EINVAL);
@@ -177,13 +182,16 @@ int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
             b->sequence = buf.sequence;
             return 0;
         }
-        case VIDIOC_STREAMON: streaming_ = true; return 0;
+        case VIDIOC_STREAMON:
+            streaming_ = true;
+            return 0;
         case VIDIOC_STREAMOFF:
             streaming_ = false;
             for (Buffer& b : buffers_) b.queued = b.done = false;
             done_order_.clear();
             return 0;
-        default: return fail(ENOTTY);
+        default:
+            return fail(ENOTTY);
     }
 }
 
@@ -191,7 +199,8 @@ void* FakeV4l2Device::mmap(std::size_t length, int, int, int fd, off_t offset) {
     if (!fds_.count(fd)) return (errno = EBADF, MAP_FAILED);
     if (!present_) return (errno = ENODEV, MAP_FAILED);
     const auto index = static_cast<std::size_t>(offset / 0x100000);
-    if (index >= buffers_.size() || length != buffers_[index].memory.size()) return (errno = EINVAL, MAP_FAILED);
+    if (index >= buffers_.size() || length != buffers_[index].memory.size())
+        return (errno = EINVAL, MAP_FAILED);
     void* p = buffers_[index].memory.data();
     mappings_[p] = length;
     return p;
@@ -221,7 +230,8 @@ int FakeV4l2Device::poll(pollfd* fds, nfds_t count, int) {
     return ready;
 }
 
-std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b, int quality) {
+std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b,
+                                   int quality) {
     jpeg_compress_struct info{};
     jpeg_error_mgr errors{};
     info.err = jpeg_std_error(&errors);
@@ -246,7 +256,8 @@ std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::u
     while (info.next_scanline < info.image_height) {
         std::vector<unsigned char> line = row;
         if (info.next_scanline >= info.image_height / 2)
-            for (int x = 0; x < width; x += 2) line[std::size_t(x) * 3] = static_cast<unsigned char>(r ^ 0x20);
+            for (int x = 0; x < width; x += 2)
+                line[std::size_t(x) * 3] = static_cast<unsigned char>(r ^ 0x20);
         unsigned char* p = line.data();
         jpeg_write_scanlines(&info, &p, 1);
     }

@@ -33,11 +33,12 @@ public:
     // Set before open: what the device is.
     std::string path = "/dev/video0";
     std::vector<FakeFormat> formats;
-    int max_buffers = 2;         // granted even when more are asked for
-    int row_padding = 64;        // bytesperline = packed row + this
-    bool exports_dmabuf = false; // VIDIOC_EXPBUF support
-    int eintr_every = 3;         // every Nth ioctl is interrupted once (0: never)
-    int dqbuf_errno = 0;         // nonzero: VIDIOC_DQBUF fails with it although poll said POLLIN (a race with unplug)
+    int max_buffers = 2;          // granted even when more are asked for
+    int row_padding = 64;         // bytesperline = packed row + this
+    bool exports_dmabuf = false;  // VIDIOC_EXPBUF support
+    int eintr_every = 3;          // every Nth ioctl is interrupted once (0: never)
+    int dqbuf_errno =
+        0;  // nonzero: VIDIOC_DQBUF fails with it although poll said POLLIN (a race with unplug)
 
     // Driving it.
     void push_frame(FakeFrame frame) { pending_.push_back(std::move(frame)); }
@@ -93,6 +94,7 @@ private:
 };
 
 // A JPEG of a solid colour (libjpeg), so MJPEG frames have known content; quality changes its length.
-std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b, int quality = 90);
+std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b,
+                                   int quality = 90);
 
 }  // namespace puddle::test

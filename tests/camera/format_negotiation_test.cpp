@@ -12,7 +12,8 @@ namespace {
 using namespace camera;
 
 TEST(FormatNegotiation, AutoPrefersNv12ThenYuyvThenMjpeg) {
-    const std::vector<OfferedFormat> all{{V4L2_PIX_FMT_MJPEG, {}}, {V4L2_PIX_FMT_YUYV, {}}, {V4L2_PIX_FMT_NV12, {}}};
+    const std::vector<OfferedFormat> all{
+        {V4L2_PIX_FMT_MJPEG, {}}, {V4L2_PIX_FMT_YUYV, {}}, {V4L2_PIX_FMT_NV12, {}}};
     EXPECT_EQ(choose_format(all, FormatPreference::Auto), V4L2_PIX_FMT_NV12);
     EXPECT_EQ(choose_format({all[0], all[1]}, FormatPreference::Auto), V4L2_PIX_FMT_YUYV);
     EXPECT_EQ(choose_format({all[0]}, FormatPreference::Auto), V4L2_PIX_FMT_MJPEG);

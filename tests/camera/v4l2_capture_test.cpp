@@ -14,7 +14,9 @@ using camera::CaptureRequest;
 using camera::FormatPreference;
 using camera::V4l2Capture;
 
-bool has_text(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool has_text(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 // A YUYV frame whose every Y byte is `luma` and whose padding bytes are 0xEE (never read as pixels).
 std::vector<std::byte> yuyv_frame(const FakeV4l2Device& dev, std::uint8_t luma) {
@@ -27,7 +29,8 @@ std::vector<std::byte> yuyv_frame(const FakeV4l2Device& dev, std::uint8_t luma) 
 
 FakeV4l2Device yuyv_device() {
     FakeV4l2Device dev;
-    dev.formats = {{V4L2_PIX_FMT_MJPEG, {{1920, 1080}}}, {V4L2_PIX_FMT_YUYV, {{640, 480}, {320, 180}, {160, 120}}}};
+    dev.formats = {{V4L2_PIX_FMT_MJPEG, {{1920, 1080}}},
+                   {V4L2_PIX_FMT_YUYV, {{640, 480}, {320, 180}, {160, 120}}}};
     return dev;
 }
 
@@ -189,7 +192,8 @@ TEST(V4l2Source, DecodesMjpegFramesOfVaryingLength) {
         EXPECT_EQ(img.layout, camera::PixelLayout::Rgba);
         EXPECT_EQ(img.width, 64);
         EXPECT_EQ(img.stride, 64 * 4);
-        const auto* px = reinterpret_cast<const std::uint8_t*>(img.data.data()) + (10 * 64 + 20) * 4;  // top half: solid
+        const auto* px =
+            reinterpret_cast<const std::uint8_t*>(img.data.data()) + (10 * 64 + 20) * 4;  // top half: solid
         EXPECT_NEAR(px[0], r, 6);
         EXPECT_NEAR(px[1], g, 6);
         EXPECT_NEAR(px[2], bl, 6);

@@ -47,9 +47,10 @@ TEST(CameraFeed, FallsBackToTheCubemapAndRecoversByItself) {
     rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
     rig.dev.max_buffers = 3;
     rig.dev.unplug();
-    rig.engine = make_engine(make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
-                                          "environment.camera_width=64", "environment.camera_height=36"}),
-                             {96, 54});
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
     ASSERT_TRUE(rig.engine);
     rig.feed().io = &rig.dev;
 
@@ -66,7 +67,8 @@ TEST(CameraFeed, FallsBackToTheCubemapAndRecoversByItself) {
     EXPECT_LE(found, 1.0 + 2.0 / 30.0);
     for (int i = 0; i < 3; ++i) rig.frame();
     const assets::Image camera = rig.engine->read_frame();
-    EXPECT_GT(mean_luma(camera), mean_luma(cubemap) + 20) << "a white room reflects brighter than the night sky";
+    EXPECT_GT(mean_luma(camera), mean_luma(cubemap) + 20)
+        << "a white room reflects brighter than the night sky";
     EXPECT_EQ(rig.dev.live_mappings(), 3);
 
     // Unplugged mid-stream: back to the cubemap at the next frame, every mapping and descriptor released.
@@ -91,9 +93,10 @@ TEST(CameraFeed, SourceCubemapClosesTheDeviceAndChangedSettingsReopenIt) {
     Rig rig;
     rig.dev.path = fake_path;
     rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}, {32, 18}}}};
-    rig.engine = make_engine(make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
-                                          "environment.camera_width=64", "environment.camera_height=36"}),
-                             {96, 54});
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
     ASSERT_TRUE(rig.engine);
     rig.feed().io = &rig.dev;
     ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
@@ -101,12 +104,16 @@ TEST(CameraFeed, SourceCubemapClosesTheDeviceAndChangedSettingsReopenIt) {
 
     // Live tuning: a new size reopens the device at once.
     rig.engine->params().set(params::ParamId::environment_camera_width, 32, params::ParamSource::CommandLine);
-    rig.engine->params().set(params::ParamId::environment_camera_height, 18, params::ParamSource::CommandLine);
-    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr && rig.dev.negotiated_width() == 32; }, 0.5), 0.0);
+    rig.engine->params().set(params::ParamId::environment_camera_height, 18,
+                             params::ParamSource::CommandLine);
+    ASSERT_GE(
+        rig.until([&] { return rig.env().reflection() != nullptr && rig.dev.negotiated_width() == 32; }, 0.5),
+        0.0);
     EXPECT_EQ(rig.dev.opens(), 2);
     EXPECT_EQ(rig.dev.open_fds(), 1);
 
-    rig.engine->params().set(params::ParamId::environment_source, std::string("cubemap"), params::ParamSource::CommandLine);
+    rig.engine->params().set(params::ParamId::environment_source, std::string("cubemap"),
+                             params::ParamSource::CommandLine);
     rig.frame();
     EXPECT_EQ(rig.env().reflection(), nullptr);
     EXPECT_EQ(rig.dev.open_fds(), 0);
@@ -118,9 +125,10 @@ TEST(CameraFeed, NewestFrameWinsAndASlowCameraNeverStallsTheDisplay) {
     rig.dev.path = fake_path;
     rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
     rig.dev.max_buffers = 4;
-    rig.engine = make_engine(make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
-                                          "environment.camera_width=64", "environment.camera_height=36"}),
-                             {96, 54});
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
     ASSERT_TRUE(rig.engine);
     rig.feed().io = &rig.dev;
     ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
@@ -129,9 +137,7 @@ TEST(CameraFeed, NewestFrameWinsAndASlowCameraNeverStallsTheDisplay) {
         for (std::size_t i = 0; i < f.size(); i += 2) f[i] = std::byte{luma};
         return FakeFrame{f};
     };
-    auto centre_luma = [&] {
-        return mean_luma(rig.engine->read_frame(), 30, 20, 66, 34);
-    };
+    auto centre_luma = [&] { return mean_luma(rig.engine->read_frame(), 30, 20, 66, 34); };
     // Three frames arrive within one display frame: one upload, the newest (bright) one.
     const std::uint64_t before = rig.feed().frames;
     for (std::uint8_t luma : {16, 16, 235}) rig.dev.push_frame(frame_of(luma));
