@@ -4,6 +4,7 @@
 #include <linux/videodev2.h>
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -149,6 +150,11 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
             if (xioctl(io, fd, VIDIOC_EXPBUF, &exp) == 0) c.buffers_[i].dmabuf = DeviceFd(io, exp.fd);
         }
     }
+    // Zero-copy frames are read by the GPU after poll() returns: keep the previous one too, where
+    // enough buffers remain with the driver.
+    const bool all_exported = std::all_of(c.buffers_.begin(), c.buffers_.end(),
+                                          [](const Buffer& b) { return static_cast<bool>(b.dmabuf); });
+    c.keep_ = r.export_dmabuf && all_exported && req.count >= 3 ? 2 : 1;
     for (std::uint32_t i = 0; i < req.count; ++i)
         if (auto q = c.queue(static_cast<int>(i)); !q) return q.error();
     v4l2_buf_type type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
@@ -168,7 +174,8 @@ V4l2Capture& V4l2Capture::operator=(V4l2Capture&& o) noexcept {
         fourcc_ = o.fourcc_;
         format_ = o.format_;
         buffers_ = std::move(o.buffers_);
-        held_ = std::exchange(o.held_, -1);
+        held_ = std::exchange(o.held_, {-1, -1});
+        keep_ = o.keep_;
         streaming_ = std::exchange(o.streaming_, false);
         dropped_ = o.dropped_;
     }
@@ -185,7 +192,7 @@ void V4l2Capture::release() {
         xioctl(*io_, fd_.get(), VIDIOC_STREAMOFF, &type);  // fails harmlessly on a vanished device
     }
     streaming_ = false;
-    held_ = -1;
+    held_ = {-1, -1};
     buffers_.clear();  // unmaps and closes exported descriptors
     fd_.reset();
 }
@@ -202,9 +209,11 @@ Result<void> V4l2Capture::queue(int index) {
 
 Result<std::optional<CapturedBuffer>> V4l2Capture::poll() {
     if (!fd_) return make_error(ExitCode::Runtime, "camera: {}: not open", path_);
-    if (held_ >= 0) {
-        const int index = std::exchange(held_, -1);
-        if (auto q = queue(index); !q) return q.error();
+    // Give back what nobody reads any more: the last frame's buffer, or with zero-copy imports the one
+    // before it (the GPU may still be sampling the last one; a frame later it is done).
+    int& done = keep_ == 1 ? held_[1] : held_[0];
+    if (done >= 0) {
+        if (auto q = queue(std::exchange(done, -1)); !q) return q.error();
     }
     pollfd p{.fd = fd_.get(), .events = POLLIN, .revents = 0};
     int n;
@@ -249,7 +258,10 @@ Result<std::optional<CapturedBuffer>> V4l2Capture::poll() {
                                 .bytes = std::span(memory.data(), used),
                                 .dmabuf_fd = buffers_[static_cast<std::size_t>(index)].dmabuf.get(),
                                 .sequence = buf.sequence};
-        held_ = index;
+    }
+    if (newest) {
+        if (keep_ == 2) held_[0] = held_[1];
+        held_[1] = newest->index;
     }
     return newest;
 }

@@ -6,6 +6,7 @@
 // V4L2_BUF_FLAG_ERROR, and reports a vanished device (ENODEV, POLLERR) as an error. The destructor
 // stops the stream, unmaps every buffer and closes the descriptor, whatever state the device is in.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -53,7 +54,8 @@ public:
     std::uint64_t dropped() const { return dropped_; }
 
     // The newest complete frame since the last call, nothing when none is ready (EAGAIN), or an error
-    // naming the device once it is gone or broken. The previous frame's buffer is requeued first.
+    // naming the device once it is gone or broken. The previous frame's buffer is requeued first (with
+    // exported dmabufs and 3 or more buffers, the one before it: the GPU may still read the last).
     Result<std::optional<CapturedBuffer>> poll();
 
 private:
@@ -70,7 +72,8 @@ private:
     std::uint32_t fourcc_ = 0;
     CameraImage format_;
     std::vector<Buffer> buffers_;
-    int held_ = -1;  // the buffer the last poll() handed out
+    std::array<int, 2> held_{-1, -1};  // handed out: [1] the last frame, [0] the one before (zero-copy)
+    int keep_ = 1;                     // buffers kept from the driver after poll(): 2 for zero-copy
     bool streaming_ = false;
     std::uint64_t dropped_ = 0;
 };

@@ -104,6 +104,28 @@ TEST(V4l2Capture, TheNewestFrameWinsAndTheOthersGoBack) {
     EXPECT_EQ(dev.queued_buffers(), 4) << "the held buffer goes back on the next poll";
 }
 
+TEST(V4l2Capture, ZeroCopyKeepsThePreviousFrameFromTheDriver) {
+    FakeV4l2Device dev = yuyv_device();
+    dev.exports_dmabuf = true;
+    dev.max_buffers = 4;
+    auto c = V4l2Capture::open(dev, {.width = 320, .height = 180, .export_dmabuf = true});
+    ASSERT_TRUE(c) << c.error().message;
+    dev.push_frame({yuyv_frame(dev, 10)});
+    ASSERT_TRUE(c->poll());
+    EXPECT_EQ(dev.queued_buffers(), 3);
+    dev.push_frame({yuyv_frame(dev, 20)});
+    auto f = c->poll();
+    ASSERT_TRUE(f && f->has_value());
+    EXPECT_EQ(dev.queued_buffers(), 2) << "the last frame and the one the GPU may still read";
+    ASSERT_TRUE(c->poll());
+    EXPECT_EQ(dev.queued_buffers(), 3) << "a frame later the older one goes back";
+    dev.push_frame({yuyv_frame(dev, 30)});
+    auto g = c->poll();
+    ASSERT_TRUE(g && g->has_value());
+    EXPECT_EQ(std::to_integer<int>((*g)->bytes[0]), 30);
+    EXPECT_EQ(dev.queued_buffers(), 2);
+}
+
 TEST(V4l2Capture, DropsErrorFlaggedAndShortBuffers) {
     FakeV4l2Device dev = yuyv_device();
     dev.max_buffers = 4;
