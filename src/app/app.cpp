@@ -15,13 +15,16 @@
 #include "app/version.hpp"
 #include "assets/image_io.hpp"
 #include "params/config_loader.hpp"
+#include "io/gpio_backend.hpp"
 #include "params/param_docs.hpp"
+#include "systems/live_tuning.hpp"
 
 namespace puddle::app {
 
 namespace {
 
 constexpr const char* system_config = "/etc/puddle/puddle.toml";
+constexpr const char* system_presets = "/etc/puddle/presets";
 constexpr long headless_default_frames = 180;
 constexpr const char* headless_default_screenshot = "puddle-headless.png";
 
@@ -30,30 +33,57 @@ int fail(const Error& e) {
     return static_cast<int>(e.code);
 }
 
-// Defaults < config file < --seed, --camera < --set.
-Result<params::Params> load_params(const CliOptions& o) {
-    params::Params params;
-    std::string path = o.config_path;
-    if (path.empty() && std::filesystem::exists(system_config)) path = system_config;
-    if (!path.empty()) {
-        auto config = params::load_config_file(path);
-        if (!config) return config.error();
-        params::apply_config(*config, params);
-        spdlog::info("config: {} ({} values)", path, config->entries.size());
-    } else {
-        spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
-    }
-    if (o.seed) params.set(params::ParamId::rain_seed, *o.seed, params::ParamSource::CommandLine);
-    if (!o.camera.empty()) {  // shorthand for the two --set lines it stands for
-        params.set(params::ParamId::environment_source, std::string("camera"), params::ParamSource::CommandLine);
-        params.set(params::ParamId::environment_camera_device, o.camera, params::ParamSource::CommandLine);
+// The config file in effect: --config, else the system one when it exists, else none.
+std::string config_path(const CliOptions& o) {
+    if (!o.config_path.empty()) return o.config_path;
+    return std::filesystem::exists(system_config) ? system_config : "";
+}
+
+// The layers of live tuning: defaults < preset < config < knob state < --seed/--set. Start-up errors in
+// the config or a flag are exit code 2; a bad state file is moved aside and only warned about.
+Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
+    std::vector<params::ConfigEntry> command_line;
+    if (o.seed) command_line.push_back({params::ParamId::rain_seed, *o.seed, 0});
+    if (!o.camera.empty()) {  // shorthand for the two --set lines it stands for; a --set still wins
+        for (const std::string& s : {std::string("environment.source=camera"), "environment.camera_device=" + o.camera}) {
+            auto entry = params::parse_assignment(s);
+            if (!entry) return entry.error();
+            command_line.push_back(std::move(*entry));
+        }
     }
     for (const std::string& s : o.sets) {
         auto entry = params::parse_assignment(s);
         if (!entry) return entry.error();
-        params.set(entry->id, entry->value, params::ParamSource::CommandLine);
+        command_line.push_back(std::move(*entry));
     }
-    return params;
+    const std::string path = config_path(o);
+    std::vector<std::string> preset_folders{system_presets};
+    if (!path.empty()) preset_folders.push_back((std::filesystem::path(path).parent_path() / "presets").string());
+    systems::LiveTuning tuning(params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
+    tuning.config_path = path;
+    if (!path.empty()) {
+        auto config = params::load_config_file(path);
+        if (!config) return config.error();
+        const std::size_t values = config->entries.size(), knobs = config->knobs.size();
+        if (auto r = tuning.layers.set_config(std::move(*config)); !r) return r.error();
+        spdlog::info("config: {} ({} values, {} knobs{}{})", path, values, knobs,
+                     tuning.layers.preset_name().empty() ? "" : ", preset ", tuning.layers.preset_name());
+    } else {
+        spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
+    }
+    if (!tuning.layers.config().knobs.empty()) {
+        tuning.state.emplace(o.state_path.empty() ? params::StateStore::default_path() : o.state_path);
+        auto loaded = tuning.state->load();
+        if (!loaded.warning.empty()) spdlog::warn("{}", loaded.warning);
+        if (loaded.state) {
+            if (auto r = tuning.layers.restore_state(*loaded.state); !r) spdlog::warn("{}", r.error().message);
+            spdlog::info("state: knob values restored from {}", tuning.state->path());
+        }
+        auto gpio = io::make_gpio_backend(o.gpio);
+        if (!gpio) return gpio.error();
+        tuning.gpio = std::move(*gpio);
+    }
+    return tuning;
 }
 
 }  // namespace
@@ -76,10 +106,11 @@ int run(int argc, const char* const* argv) {
         std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(), stdout);
         return 0;
     }
-    auto params = load_params(o);
-    if (!params) return fail(params.error());
+    auto tuning = load_tuning(o);
+    if (!tuning) return fail(tuning.error());
+    const auto params = std::make_unique<params::Params>(tuning->layers.compose());
     if (o.print_config) {
-        std::fputs(params::format_effective(*params).c_str(), stdout);
+        std::fputs(params::format_effective(*params, tuning->layers.preset_name()).c_str(), stdout);
         return 0;
     }
 
@@ -89,7 +120,9 @@ int run(int argc, const char* const* argv) {
     o.display.mode = params->s(ParamId::display_mode);
 
     spdlog::info("puddle {} starting", version());
-    auto engine = Engine::create(*params, o.display);
+    auto engine = Engine::create(*params, o.display, {}, [&tuning](ecs::World& world, ecs::Schedule& schedule) {
+        systems::add_live_tuning(world, schedule, std::move(*tuning));
+    });
     if (!engine) return fail(engine.error());
     Engine& e = **engine;
     const bool headless = e.display().kind() == platform::BackendKind::Headless;
@@ -104,6 +137,7 @@ int run(int argc, const char* const* argv) {
     const double fixed_dt = 1.0 / (o.fps_cap > 0 ? o.fps_cap : 60.0);
     auto last = clock::now();
     for (long n = 0; frames == 0 || n < frames; ++n) {
+        if (stop.take_reload()) e.world().resource<systems::LiveTuning>().reload_requested = true;
         if (stop.requested() || !e.display().poll_events()) {
             spdlog::info("stopping ({})", stop.last_signal() ? strsignal(stop.last_signal()) : "display closed");
             break;
@@ -118,6 +152,7 @@ int run(int argc, const char* const* argv) {
             std::this_thread::sleep_until(now + std::chrono::duration_cast<clock::duration>(
                                                     std::chrono::duration<double>(1.0 / o.fps_cap)));
     }
+    systems::save_state(e.world().resource<systems::LiveTuning>());  // knob changes not yet saved
     if (!screenshot.empty()) {
         const assets::Image& image = e.captured().empty() ? e.read_frame() : e.captured();
         if (auto r = assets::write_png(screenshot, image); !r) return fail(r.error());

@@ -33,6 +33,10 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         "  puddle                                  pick a display by itself (kms, window, else headless)\n"
         "  puddle --backend headless --frames 300 --screenshot rain.png\n"
         "  puddle --config /etc/puddle/puddle.toml --set rain.drop_count=40 --set water.turbidity=0.2\n"
+        "  puddle --config my.toml --print-config     every value and where it came from (preset, config, knob...)\n"
+        "Live tuning: an edited config file applies within a moment (or send SIGHUP); a bad edit is logged\n"
+        "with file:line and the last good config keeps running. `preset = \"downpour\"` in the config picks\n"
+        "a look; [[knob]] tables wire GPIO encoders, buttons and switches (see config/puddle.toml).\n"
         "Exit codes: 0 ok, 1 runtime failure, 2 bad config or flag, 3 missing or bad image, 4 no display.");
     cli.set_version_flag("--version", std::string("puddle ") + std::string(version()));
     std::string backend = "auto", size;
@@ -45,14 +49,16 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         ->check(CLI::IsMember({"auto", "kms", "window", "headless"}));
     cli.add_option("--size", size, "Render size WIDTHxHEIGHT (headless default 640x360; kms: picks that mode)");
     cli.add_flag("--fullscreen", o.display.fullscreen, "window backend: fill the screen");
-    cli.add_option("--frames,-n", o.frames, "Stop after N frames (headless default: 180, then write a PNG)")
-        ->check(CLI::Range(1L, 1000000000L));
+    cli.add_option("--frames,-n", o.frames, "Stop after N frames (headless default: 180, then write a PNG; 0: run until stopped)")
+        ->check(CLI::Range(0L, 1000000000L));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")->check(CLI::Range(0, 2147483647));
     cli.add_option("--fps-cap", o.fps_cap, "Render at most this many frames per second (fanless boards)")
         ->check(CLI::Range(0.0, 1000.0));
     cli.add_option("--camera", o.camera,
                    "Reflect a camera: a V4L2 device (/dev/video0) or mock:PATH (an image or a folder of images)");
+    cli.add_option("--gpio", o.gpio, "Knob backend: gpiod (the GPIO header), or mock:PATH to drive knobs from a script or FIFO");
+    cli.add_option("--state", o.state_path, "Where knob changes are saved (default: $STATE_DIRECTORY/state.toml, else ~/.local/state/puddle/state.toml)");
     cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
     try {

@@ -24,6 +24,8 @@ struct CliOptions {
     double fps_cap = 0;               // 0: the display's pace (vblank), headless: as fast as possible
     std::string log_level = "info";
     std::string camera;               // --camera DEVICE|mock:PATH: environment.source = camera from that device
+    std::string gpio = "gpiod";       // knob backend: gpiod, or mock:PATH (a script or FIFO of line changes)
+    std::string state_path;           // knob state file; empty: $STATE_DIRECTORY, $XDG_STATE_HOME or ~/.local/state
 };
 
 // Returns the options, or an Error with exit code 2 for bad flags. `--help` and `--version` print and

@@ -10,7 +10,8 @@ namespace puddle::app {
 
 Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
                                                const platform::DisplayOptions& display_options,
-                                               const gpu::DeviceOptions& device_options) {
+                                               const gpu::DeviceOptions& device_options,
+                                               const Plugin& input_plugin) {
     std::unique_ptr<Engine> engine(new Engine());
     auto display = platform::create_display(display_options);
     if (!display) return display.error();
@@ -21,6 +22,7 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
     engine->display_->prepare(device);
     engine->world_.insert_resource<params::Params>(params);
     engine->world_.insert_resource<systems::RenderTarget>();
+    if (input_plugin) input_plugin(engine->world_, engine->schedule_);
     if (auto r = systems::add_puddle_plugin(engine->world_, engine->schedule_); !r) return r.error();
 
     Engine* self = engine.get();

@@ -2,6 +2,7 @@
 // The Engine wires one display backend, the GPU device, the World and the Schedule together and runs
 // frames. The puddle binary, the benchmark and the GPU tests all drive the same Engine.
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -18,9 +19,12 @@ namespace puddle::app {
 class Engine {
 public:
     // Makes the display (exit code 4 on failure), the device, loads assets (3) and builds the systems.
+    // `input_plugin` adds systems that run first in the input stage (live tuning), before the puddle's.
+    using Plugin = std::function<void(ecs::World&, ecs::Schedule&)>;
     static Result<std::unique_ptr<Engine>> create(const params::Params& params,
                                                   const platform::DisplayOptions& display_options,
-                                                  const gpu::DeviceOptions& device_options = {});
+                                                  const gpu::DeviceOptions& device_options = {},
+                                                  const Plugin& input_plugin = {});
     ~Engine();
 
     // Runs one frame that advances simulated time by dt seconds: input, the due simulation steps,

@@ -10,6 +10,7 @@ StopSignals::StopSignals() {
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
     pthread_sigmask(SIG_BLOCK, &set, &previous_);
     fd_ = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
 }
@@ -20,10 +21,11 @@ StopSignals::~StopSignals() {
 }
 
 bool StopSignals::requested() {
-    if (last_) return true;
     signalfd_siginfo info{};
-    if (fd_ >= 0 && read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info))
-        last_ = static_cast<int>(info.ssi_signo);
+    while (!last_ && fd_ >= 0 && read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+        if (info.ssi_signo == SIGHUP) reload_ = true;
+        else last_ = static_cast<int>(info.ssi_signo);
+    }
     return last_ != 0;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// SIGINT/SIGTERM as a file descriptor (signalfd), polled by the frame loop: a clean stop needs no
-// global flag and no work inside a signal handler.
+// SIGINT/SIGTERM (stop) and SIGHUP (reload the config) as a file descriptor (signalfd), polled by the
+// frame loop: a clean stop needs no global flag and no work inside a signal handler.
 
 #include <csignal>
+#include <utility>
 
 namespace puddle::app {
 
@@ -14,11 +15,14 @@ public:
     StopSignals& operator=(const StopSignals&) = delete;
     // True once SIGINT or SIGTERM arrived; never blocks.
     bool requested();
+    // True once per SIGHUP received since the last call.
+    bool take_reload() { return requested(), std::exchange(reload_, false); }
     int last_signal() const { return last_; }
 
 private:
     int fd_ = -1;
     int last_ = 0;
+    bool reload_ = false;
     sigset_t previous_{};
 };
 

@@ -9,6 +9,8 @@
 
 #include <toml++/toml.h>
 
+#include "params/knob_spec_parse.hpp"
+
 namespace puddle::params {
 
 namespace {
@@ -84,6 +86,30 @@ Result<Config> parse_config(std::string_view text, std::string_view path) {
         if (!first_problem || line < first_problem->first) first_problem.emplace(line, std::move(e));
     };
     for (auto&& [section_key, section_node] : root) {
+        if (section_key.str() == "preset") {
+            auto name = section_node.value_exact<std::string>();
+            if (!name || name->empty())
+                problem(line_of(section_node), make_error(ExitCode::Config, "config: {}:{}: preset must be a preset's name, e.g. preset = \"downpour\"",
+                                                          path, line_of(section_node)));
+            else
+                config.preset = *name, config.preset_line = line_of(section_node);
+            continue;
+        }
+        if (section_key.str() == "knob") {
+            const toml::array* knobs = section_node.as_array();
+            if (!knobs || !knobs->is_array_of_tables()) {
+                problem(line_of(section_node), make_error(ExitCode::Config, "config: {}:{}: knobs are written as [[knob]] tables",
+                                                          path, line_of(section_node)));
+                continue;
+            }
+            int index = 0;
+            for (const toml::node& k : *knobs) {
+                auto knob = parse_knob(*k.as_table(), path, ++index);
+                if (!knob) problem(line_of(k), knob.error());
+                else config.knobs.push_back(std::move(*knob));
+            }
+            continue;
+        }
         const toml::table* section = section_node.as_table();
         if (!section) {
             const std::string key(section_key.str());

@@ -1,12 +1,15 @@
 #pragma once
 // The TOML config: `[section]` tables whose keys are the registry's names (`[rain] drop_count = 20`
-// is rain.drop_count). A file is validated completely before anything is applied; the first problem is
-// reported with file:line, the key, the value and what is allowed.
+// is rain.drop_count), an optional top-level `preset = "name"`, and `[[knob]]` tables. Presets and the
+// saved state use the same format. A file is validated completely before anything is applied; the
+// first problem is reported with file:line, the key, the value and what is allowed.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "params/knob_spec.hpp"
 #include "params/param_store.hpp"
 #include "util/result.hpp"
 
@@ -21,6 +24,9 @@ struct ConfigEntry {
 struct Config {
     std::string path;
     std::vector<ConfigEntry> entries;
+    std::optional<std::string> preset;  // top-level `preset = "downpour"`
+    int preset_line = 0;
+    std::vector<KnobSpec> knobs;        // `[[knob]]` tables
 };
 
 // `path` is used in messages only.

@@ -38,11 +38,15 @@ std::string format_params_markdown() {
     return out;
 }
 
-std::string format_effective(const Params& params) {
-    std::string out;
-    for (const ParamDecl& d : param_decls())
-        out += fmt::format("{:<26} = {:<24} # {}\n", d.name, format_value(params.at(d.id)),
-                           source_name(params.source(d.id)));
+std::string format_effective(const Params& params, std::string_view preset) {
+    std::string out = fmt::format("# Effective values; after each, where it came from (default < preset < config < "
+                                  "knob < --set).\n# preset: {}\n",
+                                  preset.empty() ? "none" : preset);
+    for (const ParamDecl& d : param_decls()) {
+        const ParamSource s = params.source(d.id);
+        out += fmt::format("{:<26} = {:<24} # {}{}\n", d.name, format_value(params.at(d.id)), source_name(s),
+                           s == ParamSource::Preset ? fmt::format(" {}", preset) : "");
+    }
     return out;
 }
 

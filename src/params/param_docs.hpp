@@ -10,7 +10,7 @@ namespace puddle::params {
 
 std::string format_params_list();      // one block per parameter, for a terminal
 std::string format_params_markdown();  // | name | type | default | range | help |
-// `--print-config`: every effective value and where it came from.
-std::string format_effective(const Params& params);
+// `--print-config`: every effective value and where it came from (naming the preset, if any).
+std::string format_effective(const Params& params, std::string_view preset = {});
 
 }  // namespace puddle::params

@@ -28,4 +28,13 @@ bool Params::set(ParamId id, ParamValue value, ParamSource from) {
     return true;
 }
 
+void Params::replace_with(const Params& next) {
+    bool changed = false;
+    for (std::size_t k = 0; k < param_count; ++k) {
+        sources_[k] = next.sources_[k];
+        if (values_[k] != next.values_[k]) values_[k] = next.values_[k], changed = true;
+    }
+    if (changed) ++revision_;
+}
+
 }  // namespace puddle::params

@@ -32,6 +32,9 @@ public:
     // Sets a value that was validated against its declaration. Returns false (and changes nothing) when
     // the current value comes from a higher-precedence source.
     bool set(ParamId id, ParamValue value, ParamSource from);
+    // Takes every value and source of `next` (a freshly composed set, see ParamLayers); the revision
+    // moves on only when a value changed, so systems rebuild nothing for a no-op reload.
+    void replace_with(const Params& next);
     std::uint64_t revision() const { return revision_; }
 
 private:

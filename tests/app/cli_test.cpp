@@ -104,7 +104,7 @@ TEST(Cli, CameraTakesADeviceOrAMockSource) {
 TEST(Cli, Frames) {
     EXPECT_EQ(parse_ok({"--frames", "300"}).frames, 300L);
     EXPECT_EQ(parse_ok({"-n", "1"}).frames, 1L);
-    EXPECT_EQ(parse_error({"--frames", "0"}).code, ExitCode::Config);
+    EXPECT_EQ(parse_ok({"--frames", "0"}).frames, 0L);  // run until stopped
     EXPECT_EQ(parse_error({"--frames", "many"}).code, ExitCode::Config);
     EXPECT_EQ(parse_error({"--frames", "-5"}).code, ExitCode::Config);
 }

@@ -1,0 +1,52 @@
+#include "io/gpio_backend.hpp"
+
+#include <cerrno>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "io/gpio_mock.hpp"
+
+namespace puddle::io {
+
+bool is_number(std::string_view text) {
+    if (text.empty()) return false;
+    for (char c : text)
+        if (c < '0' || c > '9') return false;
+    return true;
+}
+
+Error gpio_request_error(const LineRequest& r, int err) {
+    const std::string where = fmt::format("gpio: {} line {}", r.chip, r.line);
+    switch (err) {
+        case ENOENT:
+        case ENODEV:
+            return make_error(ExitCode::Runtime, "{}: no such chip or line (list them with gpiodetect and gpioinfo)",
+                              where);
+        case EACCES:
+        case EPERM:
+            return make_error(ExitCode::Runtime,
+                              "{}: permission denied: add the user to group gpio (sudo usermod -aG gpio $USER) and "
+                              "install deploy/99-puddle-gpio.rules",
+                              where);
+        case EBUSY:
+            return make_error(ExitCode::Runtime, "{}: busy: another program holds it (gpioinfo shows the consumer)",
+                              where);
+        case EINVAL:
+            return make_error(ExitCode::Runtime, "{}: the driver refused the settings (bias or edge detection): {}",
+                              where, std::strerror(err));
+        default: return make_error(ExitCode::Runtime, "{}: {}", where, std::strerror(err));
+    }
+}
+
+Result<std::unique_ptr<GpioBackend>> make_gpio_backend(std::string_view spec) {
+    if (spec.empty() || spec == "gpiod") return make_gpiod_backend();
+    if (spec.starts_with("mock:")) {
+        std::unique_ptr<GpioBackend> mock = std::make_unique<MockGpio>(std::string(spec.substr(5)));
+        return mock;
+    }
+    return make_error(ExitCode::Config, "--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO of line changes)",
+                      spec);
+}
+
+}  // namespace puddle::io

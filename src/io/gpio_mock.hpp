@@ -1,0 +1,52 @@
+#pragma once
+// A GPIO backend with no hardware: chips and lines in memory, driven in-process by tests or from
+// outside the process through a script file or FIFO (`puddle --gpio mock:PATH`). Each line of the
+// script is one command, read as it arrives (a file is followed like `tail -f`):
+//
+//   gpiochip0 17 0        set the raw level of line 17 on gpiochip0 (0 or 1)
+//   remove gpiochip0      unplug the chip: its lines fail, requests fail with "no such chip"
+//   add gpiochip1 LABEL   plug a chip in (64 lines; LABEL optional)
+//   busy gpiochip0 17     another program holds the line
+//   deny gpiochip0 17     permission denied on the line
+//   wait 0.5              run the rest of the script half a second later
+//   # ...                 a comment
+//
+// There is a chip gpiochip0 (label "mock-gpio") from the start. Line names are GPIO<offset>. A line
+// nobody drove sits at its bias: high with pull-up, else low.
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "io/gpio_backend.hpp"
+
+namespace puddle::io {
+
+class MockGpio : public GpioBackend {
+public:
+    explicit MockGpio(std::string script = {});
+    ~MockGpio() override;
+    std::string_view name() const override { return "mock"; }
+    Result<std::unique_ptr<GpioLine>> request(const LineRequest& request) override;
+    void poll(double now) override;
+
+    // In-process control, the same as the script commands.
+    void add_chip(const std::string& name, const std::string& label = {});
+    void remove_chip(const std::string& name);
+    void set_level(const std::string& chip, int offset, bool raw_level, double time);
+    void set_error(const std::string& chip, int offset, int err);  // EBUSY, EACCES; 0 clears
+    // Runs one script line; returns false (and changes nothing) when it is not a command.
+    bool command(std::string_view line, double now);
+
+    struct Chip;
+
+private:
+    std::map<std::string, std::shared_ptr<Chip>> chips_;
+    std::string script_;
+    int fd_ = -1;
+    std::string pending_;  // a partial script line
+    double last_time_ = 0;
+    double resume_at_ = 0;  // after a `wait`
+};
+
+}  // namespace puddle::io

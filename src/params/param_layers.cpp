@@ -1,0 +1,95 @@
+#include "params/param_layers.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace puddle::params {
+
+ParamValue clamp_to_range(const ParamDecl& d, ParamValue v) {
+    if (auto* i = std::get_if<int>(&v)) *i = std::clamp(*i, static_cast<int>(d.min), static_cast<int>(d.max));
+    if (auto* f = std::get_if<float>(&v)) *f = std::clamp(*f, static_cast<float>(d.min), static_cast<float>(d.max));
+    return v;
+}
+
+ParamLayers::ParamLayers(Presets presets, std::vector<ConfigEntry> command_line)
+    : presets_(std::move(presets)), command_line_(std::move(command_line)) {}
+
+Result<void> ParamLayers::resolve_preset(const std::string& name, Config& out) const {
+    if (name.empty()) {
+        out = Config{};
+        return {};
+    }
+    auto preset = presets_.get(name);
+    if (!preset) return preset.error();
+    out = std::move(*preset);
+    return {};
+}
+
+Result<void> ParamLayers::set_config(Config config) {
+    const std::string name = knob_preset_.empty() ? config.preset.value_or("") : knob_preset_;
+    Config preset;
+    if (auto r = resolve_preset(name, preset); !r) {
+        if (!knob_preset_.empty()) return r;
+        return make_error(ExitCode::Config, "config: {}:{}: {}", config.path, config.preset_line, r.error().message);
+    }
+    config_ = std::move(config);
+    preset_ = std::move(preset);
+    preset_name_ = name;
+    return {};
+}
+
+Result<void> ParamLayers::select_preset(const std::string& name) {
+    const std::string effective = name.empty() ? config_.preset.value_or("") : name;
+    Config preset;
+    if (auto r = resolve_preset(effective, preset); !r) return r;
+    knob_preset_ = name;
+    preset_ = std::move(preset);
+    preset_name_ = effective;
+    return {};
+}
+
+void ParamLayers::set_knob(ParamId id, ParamValue value) {
+    knob_[static_cast<std::size_t>(id)] = clamp_to_range(decl(id), std::move(value));
+}
+
+void ParamLayers::clear_knob(ParamId id) { knob_[static_cast<std::size_t>(id)].reset(); }
+
+Result<void> ParamLayers::restore_state(const Config& state) {
+    for (const ConfigEntry& e : state.entries) set_knob(e.id, e.value);
+    if (state.preset && *state.preset != knob_preset_) {
+        if (auto r = select_preset(*state.preset); !r)
+            return make_error(ExitCode::Config, "state: {}: saved preset '{}' is gone; using the config's", state.path,
+                              *state.preset);
+    }
+    return {};
+}
+
+std::string ParamLayers::state_text() const {
+    std::string out = "# Written by puddle: what the knobs changed. Delete this file to forget it.\n";
+    if (!knob_preset_.empty()) out += fmt::format("preset = \"{}\"\n", knob_preset_);
+    std::string_view section;
+    for (const ParamDecl& d : param_decls()) {
+        const auto& v = knob_[static_cast<std::size_t>(d.id)];
+        if (!v) continue;
+        const std::size_t dot = d.name.find('.');
+        if (d.name.substr(0, dot) != section) {
+            section = d.name.substr(0, dot);
+            out += fmt::format("[{}]\n", section);
+        }
+        out += fmt::format("{} = {}\n", d.name.substr(dot + 1), format_value(*v));
+    }
+    return out;
+}
+
+Params ParamLayers::compose() const {
+    Params p;
+    apply_config(preset_, p, ParamSource::Preset);
+    apply_config(config_, p, ParamSource::Config);
+    for (const ParamDecl& d : param_decls())
+        if (const auto& v = knob_[static_cast<std::size_t>(d.id)]) p.set(d.id, *v, ParamSource::Knob);
+    for (const ConfigEntry& e : command_line_) p.set(e.id, e.value, ParamSource::CommandLine);
+    return p;
+}
+
+}  // namespace puddle::params

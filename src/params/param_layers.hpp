@@ -1,0 +1,61 @@
+#pragma once
+// Where values come from while the program runs, lowest to highest precedence:
+//   built-in defaults < preset < config file < knob state < --set
+// Each source is kept as its own layer; any change recomposes the effective Params from all of them, so
+// a reloaded config never overwrites a knob's value and a removed config line falls back to the preset
+// or the default.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "params/config_loader.hpp"
+#include "params/param_store.hpp"
+#include "params/presets.hpp"
+
+namespace puddle::params {
+
+class ParamLayers {
+public:
+    ParamLayers(Presets presets, std::vector<ConfigEntry> command_line);
+
+    // Makes `config` the config layer, with the preset it names. Validates everything first: on error
+    // nothing changes (the last good config keeps running).
+    Result<void> set_config(Config config);
+    const Config& config() const { return config_; }
+
+    // A preset chosen with a knob's button; it wins over the config's `preset =`. Empty: the config's.
+    Result<void> select_preset(const std::string& name);
+    // The preset in effect ("" for none).
+    const std::string& preset_name() const { return preset_name_; }
+    const std::string& knob_preset() const { return knob_preset_; }
+    const Presets& presets() const { return presets_; }
+
+    // Knob state. The value is clamped to the parameter's registered range.
+    void set_knob(ParamId id, ParamValue value);
+    void clear_knob(ParamId id);
+    const std::optional<ParamValue>& knob(ParamId id) const { return knob_[static_cast<std::size_t>(id)]; }
+    // Restores saved knob state (a state file: `preset =` and parameter values); unknown presets are
+    // dropped with the returned warning.
+    Result<void> restore_state(const Config& state);
+    // The knob state as the text of a state file.
+    std::string state_text() const;
+
+    Params compose() const;
+
+private:
+    Result<void> resolve_preset(const std::string& name, Config& out) const;
+    Presets presets_;
+    Config config_;
+    std::string preset_name_;
+    Config preset_;
+    std::string knob_preset_;
+    std::array<std::optional<ParamValue>, param_count> knob_{};
+    std::vector<ConfigEntry> command_line_;
+};
+
+// Clamps a number to its declaration's range (other kinds unchanged).
+ParamValue clamp_to_range(const ParamDecl& d, ParamValue v);
+
+}  // namespace puddle::params

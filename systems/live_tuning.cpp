@@ -1,0 +1,171 @@
+#include "systems/live_tuning.hpp"
+
+#include <time.h>
+
+#include <cmath>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+namespace puddle::systems {
+
+using params::ParamId;
+using params::ParamKind;
+
+double monotonic_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+namespace {
+
+void make_knobs(LiveTuning& t) {
+    t.knobs.clear();
+    const auto& specs = t.layers.config().knobs;
+    if (specs.empty()) return;
+    if (!t.gpio) t.gpio = io::make_gpiod_backend();
+    t.knobs.reserve(specs.size());
+    for (const auto& spec : specs) t.knobs.emplace_back(spec);
+    t.actions.reserve(64 * specs.size());
+    spdlog::info("gpio: {} knob(s) on {}", specs.size(), t.gpio->name());
+}
+
+// One line listing what a recompose changed, e.g. "rain.intensity 0.3 -> 0.5 (knob)".
+std::string describe_changes(const params::Params& before, const params::Params& after) {
+    std::string out;
+    int n = 0;
+    for (const auto& d : params::param_decls()) {
+        if (before.at(d.id) == after.at(d.id)) continue;
+        if (n++ < 6)
+            out += fmt::format("{}{} {} -> {} ({})", out.empty() ? "" : ", ", d.name, params::format_value(before.at(d.id)),
+                               params::format_value(after.at(d.id)), params::source_name(after.source(d.id)));
+    }
+    if (n > 6) out += fmt::format(" and {} more", n - 6);
+    return n ? out : "no value changed";
+}
+
+void apply_action(LiveTuning& t, const io::KnobAction& a, const params::Params& current, double now) {
+    const params::KnobSpec& k = *a.knob;
+    switch (a.kind) {
+        case io::KnobAction::Kind::Turn: {
+            const auto& d = params::decl(*k.param);
+            const auto& held = t.layers.knob(*k.param);
+            const params::ParamValue& base = held ? *held : current.at(*k.param);
+            if (d.kind == ParamKind::Int) {
+                const double step = a.amount >= 0 ? std::max(1.0, std::round(a.amount)) : std::min(-1.0, std::round(a.amount));
+                t.layers.set_knob(*k.param, static_cast<int>(std::clamp(std::get<int>(base) + step, d.min, d.max)));
+            } else {
+                t.layers.set_knob(*k.param, static_cast<float>(static_cast<double>(std::get<float>(base)) + a.amount));
+            }
+            break;
+        }
+        case io::KnobAction::Kind::Level: t.layers.set_knob(*k.param, a.level); break;
+        case io::KnobAction::Kind::Press:
+            switch (k.action) {
+                case params::ButtonAction::NextPreset:
+                case params::ButtonAction::PreviousPreset: {
+                    const int dir = k.action == params::ButtonAction::NextPreset ? 1 : -1;
+                    const std::string next = t.layers.presets().step(t.layers.preset_name(), dir);
+                    if (auto r = t.layers.select_preset(next); !r) spdlog::warn("{}", r.error().message);
+                    else spdlog::info("preset: {} (knob)", next);
+                    break;
+                }
+                case params::ButtonAction::Reset: t.layers.clear_knob(*k.param); break;
+                case params::ButtonAction::Toggle: {
+                    const auto& held = t.layers.knob(*k.param);
+                    t.layers.set_knob(*k.param, !std::get<bool>(held ? *held : current.at(*k.param)));
+                    break;
+                }
+                case params::ButtonAction::SaveState:
+                    t.state_dirty = true;
+                    save_state(t);
+                    return;
+            }
+            break;
+    }
+    t.layers_changed = true;
+    t.change_reason = "knob";
+    t.state_dirty = true;
+    t.last_knob_change = now;
+}
+
+}  // namespace
+
+void start_live_tuning(LiveTuning& t) {
+    make_knobs(t);
+    if (t.config_path.empty()) return;
+    auto watcher = params::ConfigWatcher::watch(t.config_path);
+    if (!watcher) {
+        spdlog::warn("{}; edits apply on SIGHUP only", watcher.error().message);
+        return;
+    }
+    t.watcher = std::move(*watcher);
+    spdlog::info("config: watching {} for changes (or send SIGHUP)", t.config_path);
+}
+
+bool reload_config(LiveTuning& t) {
+    if (t.config_path.empty()) return false;
+    auto config = params::load_config_file(t.config_path);
+    if (!config) {
+        spdlog::error("{} (keeping the last good configuration)", config.error().message);
+        return false;
+    }
+    const bool knobs_changed = config->knobs != t.layers.config().knobs;
+    if (auto r = t.layers.set_config(std::move(*config)); !r) {
+        spdlog::error("{} (keeping the last good configuration)", r.error().message);
+        return false;
+    }
+    if (knobs_changed) make_knobs(t);
+    t.layers_changed = true;
+    t.change_reason = "config: reloaded";
+    return true;
+}
+
+void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
+    bool reload = std::exchange(t.reload_requested, false);
+    if (t.watcher) {
+        switch (t.watcher->poll()) {
+            case params::ConfigWatcher::Change::Written: reload = true; break;
+            case params::ConfigWatcher::Change::Removed:
+                spdlog::warn("config: {} was removed; keeping the last good configuration until it is back",
+                             t.config_path);
+                break;
+            case params::ConfigWatcher::Change::None: break;
+        }
+    }
+    if (reload) reload_config(t);
+
+    if (t.gpio && !t.knobs.empty()) {
+        t.gpio->poll(now);
+        t.actions.clear();
+        for (io::Knob& k : t.knobs) k.update(*t.gpio, now, t.actions);
+        for (const io::KnobAction& a : t.actions) apply_action(t, a, params, now);
+        t.actions.clear();
+    }
+    if (t.state_dirty && t.state && now - t.last_knob_change >= LiveTuning::save_delay_seconds) save_state(t);
+
+    if (!t.layers_changed) return;
+    t.layers_changed = false;
+    const params::Params next = t.layers.compose();
+    const std::string changes = describe_changes(params, next);
+    params.replace_with(next);
+    spdlog::info("{}: {}", t.change_reason, changes);
+}
+
+void save_state(LiveTuning& t) {
+    if (!t.state_dirty || !t.state) return;
+    t.state_dirty = false;
+    if (auto r = t.state->save(t.layers.state_text()); !r) spdlog::warn("{}", r.error().message);
+    else spdlog::info("state: knob values saved to {}", t.state->path());
+}
+
+void add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning) {
+    world.insert_resource<LiveTuning>(std::move(tuning));
+    start_live_tuning(world.resource<LiveTuning>());
+    schedule.add_system(ecs::Stage::Input, "live tuning", [](ecs::World& w) {
+        live_tuning_step(w.resource<LiveTuning>(), w.resource<params::Params>(), monotonic_seconds());
+    });
+}
+
+}  // namespace puddle::systems

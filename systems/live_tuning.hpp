@@ -1,0 +1,60 @@
+#pragma once
+// Live tuning: the input-stage system that keeps Params up to date while the display runs. It reloads
+// the config when the file changes (inotify) or on SIGHUP, turns knob events into parameter changes,
+// saves the knob state a few seconds after the last turn, and recomposes the effective Params from the
+// layers (defaults < preset < config < knobs < --set) whenever one of them changed. Other systems just
+// read Params; a value that needs a rebuild (wave resolution) is rebuilt by the system that owns it.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ecs/schedule.hpp"
+#include "ecs/world.hpp"
+#include "io/gpio_backend.hpp"
+#include "io/knob.hpp"
+#include "params/config_watcher.hpp"
+#include "params/param_layers.hpp"
+#include "params/state_store.hpp"
+
+namespace puddle::systems {
+
+// Resource.
+struct LiveTuning {
+    static constexpr double save_delay_seconds = 3.0;
+
+    explicit LiveTuning(params::ParamLayers l) : layers(std::move(l)) {}
+    params::ParamLayers layers;
+    std::string config_path;  // empty: no config file, nothing to watch
+    std::optional<params::ConfigWatcher> watcher;
+    bool reload_requested = false;  // set by SIGHUP
+    std::unique_ptr<io::GpioBackend> gpio;
+    std::vector<io::Knob> knobs;
+    std::vector<io::KnobAction> actions;
+    std::optional<params::StateStore> state;
+    bool state_dirty = false;
+    double last_knob_change = 0;
+    bool layers_changed = false;
+    const char* change_reason = "";  // for the log line
+};
+
+// Seconds on CLOCK_MONOTONIC, the clock of the kernel's GPIO event timestamps.
+double monotonic_seconds();
+
+// Creates the knobs of the current config (on `tuning.gpio`, when there are any) and starts watching
+// the config file. Call once, before the frame loop.
+void start_live_tuning(LiveTuning& tuning);
+// Reads the config file again; an invalid file is logged (file:line and why) and the last good
+// configuration keeps running. Returns true when the new file was applied.
+bool reload_config(LiveTuning& tuning);
+// One input-stage step at time `now`: config changes, knob events, the delayed state save, and the
+// recomposed `params` when a layer changed (logged as one line naming what changed).
+void live_tuning_step(LiveTuning& tuning, params::Params& params, double now);
+// Writes the knob state now when it has unsaved changes (at exit, or the "save" button).
+void save_state(LiveTuning& tuning);
+
+// Inserts the resource and adds the live-tuning system to the input stage.
+void add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning);
+
+}  // namespace puddle::systems

@@ -1,0 +1,188 @@
+// Live tuning through the real binary: a knob turned through the mock GPIO backend changes the
+// parameter, the picture and the saved state; an edited config or SIGHUP reloads a running display.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include "assets/image_io.hpp"
+#include "support/test_support.hpp"
+
+extern char** environ;
+
+namespace puddle::test {
+namespace {
+
+std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+int run_to_end(const std::string& args, std::string* output = nullptr) {
+    const std::string cmd = std::string(PUDDLE_BINARY) + " " + args + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return -1;
+    char buf[4096];
+    std::string out;
+    while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+    if (output) *output = out;
+    const int status = pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The binary running in the background until stopped, its log in a file.
+class Running {
+public:
+    Running(const std::vector<std::string>& args, std::filesystem::path log) : log_(std::move(log)) {
+        std::vector<std::string> all{PUDDLE_BINARY};
+        all.insert(all.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (auto& a : all) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_adddup2(&actions, 1, 2);
+        ok_ = posix_spawn(&pid_, PUDDLE_BINARY, &actions, nullptr, argv.data(), environ) == 0;
+        posix_spawn_file_actions_destroy(&actions);
+    }
+    ~Running() {
+        if (pid_ > 0) stop();
+    }
+    Running(const Running&) = delete;
+    Running& operator=(const Running&) = delete;
+    // Waits (up to 60 s: llvmpipe on a busy CI machine is slow) until the log contains `text`.
+    bool wait_for(const std::string& text, int after = 0) {
+        for (int i = 0; i < 600; ++i) {
+            if (count(text) > after) return true;
+            if (int status = 0; ::waitpid(pid_, &status, WNOHANG) == pid_) {  // it exited: no use waiting
+                pid_ = -1;
+                return count(text) > after;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        return false;
+    }
+    int count(const std::string& text) const {
+        const std::string log = read_file(log_);
+        int n = 0;
+        for (auto at = log.find(text); at != std::string::npos; at = log.find(text, at + 1)) ++n;
+        return n;
+    }
+    void signal(int sig) const { ::kill(pid_, sig); }
+    int stop() {
+        if (pid_ <= 0) return -1;
+        ::kill(pid_, SIGTERM);
+        int status = 0;
+        ::waitpid(pid_, &status, 0);
+        pid_ = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    std::string log() const { return read_file(log_); }
+    bool ok() const { return ok_; }
+
+private:
+    std::filesystem::path log_;
+    pid_t pid_ = -1;
+    bool ok_ = false;
+};
+
+constexpr const char* knob_config = R"(
+[[knob]]
+kind = "encoder"
+a = 17
+b = 18
+param = "look.vignette"
+step = 0.2
+)";
+
+// Rest levels, then (next frame, after the knob opened) four clockwise detents.
+std::string turn_script(int detents) {
+    std::string s = "gpiochip0 17 1\ngpiochip0 18 1\nwait 0\n";
+    for (int i = 0; i < detents; ++i) s += "gpiochip0 17 0\ngpiochip0 18 0\ngpiochip0 17 1\ngpiochip0 18 1\n";
+    return s;
+}
+
+TEST(LiveTuningEndToEnd, TurningAKnobChangesTheParameterThePictureAndTheSavedState) {
+    TempDir dir;
+    const std::string config = dir.write("puddle.toml", knob_config);
+    const std::string still = dir.write("still.txt", turn_script(0));
+    const std::string turned = dir.write("turned.txt", turn_script(4));
+    const std::string common = "-b headless --size 160x90 --frames 20 --seed 3 --config " + config;
+
+    std::string out;
+    ASSERT_EQ(run_to_end(common + " --gpio mock:" + still + " --state " + (dir / "s0.toml").string() +
+                             " --screenshot " + (dir / "still.png").string(), &out), 0) << out;
+    ASSERT_EQ(run_to_end(common + " --gpio mock:" + turned + " --state " + (dir / "s1.toml").string() +
+                             " --screenshot " + (dir / "turned.png").string(), &out), 0) << out;
+    EXPECT_NE(out.find("knob: look.vignette 0.5 -> 1.3 (knob)"), std::string::npos) << out;
+
+    auto a = assets::read_image((dir / "still.png").string());
+    auto b = assets::read_image((dir / "turned.png").string());
+    ASSERT_TRUE(a.ok() && b.ok());
+    // More vignette: darker corners, the same centre.
+    EXPECT_LT(mean_luma(*b, 0, 0, 16, 9) + 2.0, mean_luma(*a, 0, 0, 16, 9));
+    EXPECT_NEAR(mean_luma(*b, 70, 40, 90, 50), mean_luma(*a, 70, 40, 90, 50), 3.0);
+
+    EXPECT_FALSE(std::filesystem::exists(dir / "s0.toml")) << "nothing turned, nothing saved";
+    const std::string state = read_file(dir / "s1.toml");
+    EXPECT_NE(state.find("[look]\nvignette = 1.3"), std::string::npos) << state;
+
+    // The next start restores it.
+    ASSERT_EQ(run_to_end("--config " + config + " --state " + (dir / "s1.toml").string() + " --print-config", &out), 0);
+    EXPECT_NE(out.find("look.vignette              = 1.3                      # knob"), std::string::npos) << out;
+}
+
+TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne) {
+    TempDir dir;
+    const std::string config = dir.write("puddle.toml", "[rain]\ndrop_count = 10\n");
+    Running puddle({"-b", "headless", "--size", "64x36", "--frames", "0", "--config", config}, dir / "log.txt");
+    ASSERT_TRUE(puddle.ok());
+    ASSERT_TRUE(puddle.wait_for("headless: EGL")) << puddle.log();  // watching, and running frames now
+
+    // An editor's save: a new file renamed over the old one.
+    std::filesystem::rename(dir.write("puddle.toml.new", "[rain]\ndrop_count = 40\n"), config);
+    ASSERT_TRUE(puddle.wait_for("config: reloaded: rain.drop_count 10 -> 40 (config)")) << puddle.log();
+
+    std::ofstream(config) << "[rain]\ndrop_count = 400\n";  // out of range
+    ASSERT_TRUE(puddle.wait_for("keeping the last good configuration")) << puddle.log();
+    EXPECT_NE(puddle.log().find("puddle.toml:2: rain.drop_count = 400"), std::string::npos) << puddle.log();
+
+    // SIGHUP reloads too (a valid file again).
+    {
+        std::ofstream(config) << "[rain]\ndrop_count = 12\n";
+    }
+    ASSERT_TRUE(puddle.wait_for("rain.drop_count 40 -> 12")) << puddle.log();
+    EXPECT_EQ(puddle.count("wave: 512x512 field"), 1) << "reloads did not restart the ripples";
+    const int reloads = puddle.count("config: reloaded");
+    puddle.signal(SIGHUP);
+    ASSERT_TRUE(puddle.wait_for("config: reloaded", reloads)) << puddle.log();
+
+    // A value that needs new textures: the wave field is rebuilt at the new size and frames go on.
+    std::ofstream(config) << "[rain]\ndrop_count = 12\n[wave]\nresolution = 128\n";
+    ASSERT_TRUE(puddle.wait_for("wave: 128x128 field")) << puddle.log();
+    EXPECT_EQ(puddle.count("error"), 1) << "only the bad file's line:\n" << puddle.log();
+    EXPECT_EQ(puddle.stop(), 0) << puddle.log();
+}
+
+TEST(LiveTuningEndToEnd, AMissingGpioChipIsAWarningNotAFailure) {
+    TempDir dir;
+    const std::string config = dir.write("puddle.toml", std::string(knob_config) + "chip = \"gpiochip9\"\n");
+    std::string out;
+    ASSERT_EQ(run_to_end("-b headless --size 64x36 --frames 3 --gpio mock: --config " + config, &out), 0) << out;
+    EXPECT_NE(out.find("gpio: gpiochip9 line 17: no such chip or line"), std::string::npos) << out;
+    EXPECT_NE(out.find("retrying every 3 s"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace puddle::test

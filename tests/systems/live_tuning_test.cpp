@@ -1,0 +1,182 @@
+// The live-tuning system: config reloads and knob turns reaching Params, the delayed state save.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/gpio_mock.hpp"
+#include "support/test_support.hpp"
+#include "systems/live_tuning.hpp"
+
+namespace puddle::systems {
+namespace {
+
+using params::ParamId;
+using params::ParamSource;
+
+struct Rig {
+    test::TempDir dir;
+    std::string config_path;
+    io::MockGpio* gpio = nullptr;
+    std::optional<LiveTuning> tuning;
+    params::Params params;
+
+    explicit Rig(const std::string& config_text) {
+        config_path = dir.write("puddle.toml", config_text);
+        tuning.emplace(params::ParamLayers(params::Presets::load({}), {}));
+        tuning->config_path = config_path;
+        auto config = params::load_config_file(config_path);
+        EXPECT_TRUE(config) << config.error().message;
+        EXPECT_TRUE(tuning->layers.set_config(std::move(*config)));
+        auto mock = std::make_unique<io::MockGpio>();
+        gpio = mock.get();
+        tuning->gpio = std::move(mock);
+        tuning->state.emplace((dir / "state.toml").string());
+        params = tuning->layers.compose();
+        start_live_tuning(*tuning);
+    }
+    void step(double now) { live_tuning_step(*tuning, params, now); }
+    void write_config(const std::string& text) {
+        const std::string temp = dir.write("puddle.toml.new", text);
+        std::filesystem::rename(temp, config_path);  // as editors save
+    }
+};
+
+TEST(LiveTuning, AnEditedConfigAppliesOnTheNextFrame) {
+    Rig rig("[rain]\ndrop_count = 10\n");
+    rig.step(1.0);
+    const auto revision = rig.params.revision();
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    rig.write_config("[rain]\ndrop_count = 30\n[look]\nvignette = 1.0\n");
+    rig.step(1.016);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 30);
+    EXPECT_FLOAT_EQ(rig.params.f(ParamId::look_vignette), 1.0f);
+    EXPECT_GT(rig.params.revision(), revision);
+}
+
+TEST(LiveTuning, AnInvalidFileKeepsTheLastGoodConfigAndTheNextValidSaveApplies) {
+    Rig rig("[rain]\ndrop_count = 10\n");
+    rig.step(1.0);
+    rig.write_config("[rain]\ndrop_count = 10\nintensity = 99\n");  // out of range: nothing applies
+    rig.step(1.1);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    rig.write_config("[rain\ngarbage");
+    rig.step(1.2);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    rig.write_config("[rain]\ndrop_count = 12\n");
+    rig.step(1.3);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 12);
+}
+
+TEST(LiveTuning, DeletedConfigKeepsRunningAndARecreatedOneApplies) {
+    Rig rig("[rain]\ndrop_count = 10\n");
+    rig.step(1.0);
+    std::filesystem::remove(rig.config_path);
+    rig.step(1.1);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    std::ofstream(rig.config_path) << "[rain]\ndrop_count = 20\n";
+    rig.step(1.2);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 20);
+}
+
+TEST(LiveTuning, SighupReloads) {
+    Rig rig("[rain]\ndrop_count = 10\n");
+    rig.tuning->watcher.reset();  // as if inotify were unavailable
+    std::ofstream(rig.config_path) << "[rain]\ndrop_count = 11\n";
+    rig.step(1.0);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    rig.tuning->reload_requested = true;
+    rig.step(1.1);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 11);
+}
+
+TEST(LiveTuning, AnUnchangedReloadDoesNotBumpTheRevision) {
+    Rig rig("[rain]\ndrop_count = 10\n");
+    rig.step(1.0);
+    const auto revision = rig.params.revision();
+    rig.write_config("[rain]\ndrop_count = 10\n");
+    rig.step(1.1);
+    EXPECT_EQ(rig.params.revision(), revision) << "no rebuilds for a save without changes";
+}
+
+constexpr const char* knob_config = R"(
+[rain]
+intensity = 0.5
+
+[[knob]]
+kind = "encoder"
+a = 17
+b = 18
+param = "rain.intensity"
+step = 0.1
+
+[[knob]]
+kind = "button"
+line = 27
+action = "next-preset"
+)";
+
+void turn(io::MockGpio& gpio, double t, int detents) {
+    for (int i = 0; i < detents; ++i, t += 0.5) {
+        gpio.set_level("gpiochip0", 17, false, t);
+        gpio.set_level("gpiochip0", 18, false, t + 0.001);
+        gpio.set_level("gpiochip0", 17, true, t + 0.002);
+        gpio.set_level("gpiochip0", 18, true, t + 0.003);
+    }
+}
+
+TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
+    Rig rig(knob_config);
+    rig.gpio->set_level("gpiochip0", 17, true, 0);
+    rig.gpio->set_level("gpiochip0", 18, true, 0);
+    rig.step(1.0);  // opens the lines
+    turn(*rig.gpio, 1.1, 2);
+    rig.step(2.5);
+    EXPECT_NEAR(rig.params.f(ParamId::rain_intensity), 0.7f, 1e-5);
+    EXPECT_EQ(rig.params.source(ParamId::rain_intensity), ParamSource::Knob);
+    EXPECT_FALSE(std::filesystem::exists(rig.dir / "state.toml")) << "saved a few seconds after the last change";
+    rig.step(2.5 + LiveTuning::save_delay_seconds);
+    ASSERT_TRUE(std::filesystem::exists(rig.dir / "state.toml"));
+    auto saved = params::load_config_file((rig.dir / "state.toml").string());
+    ASSERT_TRUE(saved);
+    ASSERT_EQ(saved->entries.size(), 1u);
+    EXPECT_NEAR(std::get<float>(saved->entries[0].value), 0.7f, 1e-5);
+
+    for (int i = 0; i < 3; ++i) {  // far past the top of the range
+        turn(*rig.gpio, 10.0 + 20.0 * i, 20);
+        rig.step(20.0 + 20.0 * i);
+    }
+    EXPECT_FLOAT_EQ(rig.params.f(ParamId::rain_intensity), 4.0f);
+}
+
+TEST(LiveTuning, AConfigReloadDoesNotUndoAKnob) {
+    Rig rig(knob_config);
+    rig.gpio->set_level("gpiochip0", 17, true, 0);
+    rig.gpio->set_level("gpiochip0", 18, true, 0);
+    rig.step(1.0);
+    turn(*rig.gpio, 1.1, 1);
+    rig.step(2.0);
+    EXPECT_NEAR(rig.params.f(ParamId::rain_intensity), 0.6f, 1e-5);
+    std::string text = knob_config;
+    text.replace(text.find("0.5"), 3, "0.2");
+    rig.write_config(text + "\n[look]\nvignette = 0.9\n");
+    rig.step(2.1);
+    EXPECT_NEAR(rig.params.f(ParamId::rain_intensity), 0.6f, 1e-5) << "knob state is above the config";
+    EXPECT_FLOAT_EQ(rig.params.f(ParamId::look_vignette), 0.9f);
+}
+
+TEST(LiveTuning, AButtonStepsThroughThePresets) {
+    Rig rig(knob_config);
+    rig.step(1.0);
+    rig.gpio->set_level("gpiochip0", 27, true, 1.5);
+    rig.step(1.6);
+    const std::string first = rig.tuning->layers.preset_name();
+    EXPECT_EQ(first, rig.tuning->layers.presets().names().front());
+    rig.gpio->set_level("gpiochip0", 27, false, 2.0);
+    rig.gpio->set_level("gpiochip0", 27, true, 2.5);
+    rig.step(2.6);
+    EXPECT_EQ(rig.tuning->layers.preset_name(), rig.tuning->layers.presets().names()[1]);
+}
+
+}  // namespace
+}  // namespace puddle::systems
