@@ -11,10 +11,13 @@
 //     its edges the edge texels stretch outward.
 precision highp float;
 
+#include "colour.glsl"
+
 in vec2 v_uv;
 out vec4 o_color;
 
-uniform samplerCube u_env;      // the static cubemap (sRGB: sampled as linear)
+uniform samplerCube u_env;      // the static cubemap: linear (sRGB8 decoded by the sampler, half float) or RGBM
+uniform bool u_env_rgbm;
 uniform sampler2D u_camera;     // the converted camera frame (sRGB: sampled as linear), row 0 at the top
 uniform int u_face;             // GL order +X, -X, +Y, -Y, +Z, -Z
 uniform vec3 u_axis;
@@ -50,7 +53,8 @@ vec2 camera_uv(vec3 d) {
 
 void main() {
     vec3 d = normalize(face_direction(u_face, v_uv));
-    vec3 sky = texture(u_env, d).rgb;
+    vec4 texel = texture(u_env, d);
+    vec3 sky = u_env_rgbm ? decode_rgbm(texel) : texel.rgb;  // beyond 1 clips in this 8-bit cube
     vec3 cam = texture(u_camera, camera_uv(d)).rgb;
     o_color = vec4(mix(sky, cam, u_environment_camera_blend), 1.0);
 }

@@ -1,7 +1,7 @@
 #version 300 es
 // The puddle image (REFERENCE.md section 1): a box of water whose top is displaced by the wave field, seen from
 // the camera; Fresnel-Schlick between a rotated environment reflection and the ground refracted through
-// murky water; then fog, vignette and gamma.
+// murky water; then fog, vignette, tone mapping and sRGB encoding.
 //
 // Two ways to find where a view ray meets the water, chosen by #define:
 //   METHOD_RAYMARCH: the reference's sphere-trace of the displaced box (render.march_steps reads);
@@ -10,12 +10,13 @@
 precision highp float;
 
 #include "surface_encoding.glsl"
+#include "colour.glsl"
 
 in vec2 v_uv;
 out vec4 o_color;
 
 uniform sampler2D u_surface;   // height, hL - hR, hD - hU (surface.frag)
-uniform samplerCube u_env;     // sRGB: sampled as linear
+uniform samplerCube u_env;     // linear radiance: sRGB8 decoded by the sampler, half float, or RGBM (u_env_rgbm)
 uniform sampler2D u_ground;    // sRGB: sampled as linear
 
 // Camera, computed once per frame on the CPU.
@@ -25,6 +26,8 @@ uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;
 uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1)
 uniform mat3 u_env_matrix;     // rotation about +Y by environment.rotation
+uniform bool u_env_rgbm;       // the cube holds RGBM texels (no half-float render targets)
+uniform float u_env_scale;     // 2^environment.exposure
 
 // Parameters, named after the registry (params.def).
 uniform vec3 u_puddle_size;
@@ -39,6 +42,7 @@ uniform float u_ground_scale;
 uniform float u_look_fog_density;
 uniform float u_look_vignette;
 uniform int u_render_march_steps;
+uniform int u_look_tonemap;    // index into look.tonemap's choices: TONEMAP_* in colour.glsl
 
 const float IOR = 1.333;
 
@@ -50,7 +54,10 @@ vec3 surface_at(vec2 xz) {
 float top() { return 0.5 * u_puddle_size.y; }
 float water_height(vec2 xz) { return top() + surface_at(xz).r * u_wave_height_scale; }
 
-vec3 environment(vec3 dir) { return texture(u_env, u_env_matrix * dir).rgb; }
+vec3 environment(vec3 dir) {
+    vec4 texel = texture(u_env, u_env_matrix * dir);
+    return (u_env_rgbm ? decode_rgbm(texel) : texel.rgb) * u_env_scale;
+}
 
 // Slab intersection with the axis-aligned box of half size h, widened upward by the largest displacement.
 bool enter_box(vec3 o, vec3 d, vec3 h, out float t_near) {
@@ -156,5 +163,5 @@ void main() {
     }
 
     colour *= 1.0 - u_look_vignette * length(v_uv - 0.5);
-    o_color = vec4(pow(max(colour, 0.0), vec3(1.0 / 2.2)), 1.0);
+    o_color = vec4(encode_srgb(tonemap(colour, u_look_tonemap)), 1.0);
 }

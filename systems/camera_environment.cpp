@@ -225,6 +225,7 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
         pass.set_pipeline(ball ? env.cube_mirror_ball : env.cube_planar)
             .set_texture(0, sky.cube, sky.sampler)
             .set_texture(1, env.colour, env.linear)
+            .set("u_env_rgbm", sky.rgbm ? 1 : 0)
             .set("u_face", face)
             .set("u_axis", axis)
             .set("u_right", right)

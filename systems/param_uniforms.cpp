@@ -11,8 +11,13 @@ void set_param_uniforms(gpu::RenderPass& pass, const params::Params& params) {
             case ParamKind::Bool: pass.set(d.uniform, params.b(d.id) ? 1 : 0); break;
             case ParamKind::Vec3:
             case ParamKind::Color: pass.set(d.uniform, params.v3(d.id)); break;
-            case ParamKind::Enum:
-            case ParamKind::Path: break;  // chosen by #define or on the CPU, not uniforms
+            case ParamKind::Enum: {  // the index of the choice, in params.def order
+                const std::string& value = params.s(d.id);
+                for (std::size_t k = 0; k < d.choices.size(); ++k)
+                    if (d.choices[k] == value) pass.set(d.uniform, static_cast<int>(k));
+                break;
+            }
+            case ParamKind::Path: break;  // files are loaded on the CPU, not uniforms
         }
     }
 }

@@ -51,7 +51,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     if (auto r = load_environment(device, params, env); !r) return r;
     auto& ground = world.insert_resource<Ground>();
     if (auto r = load_ground(device, params, ground); !r) return r;
-    spdlog::info("environment: {}; ground: {}", env.source, ground.source);
+    spdlog::info("ground: {}", ground.source);
     world.insert_resource<CameraEnvironment>();
     if (auto r = open_camera_feed(world.insert_resource<CameraFeed>(), params); !r) return r;
 
@@ -71,6 +71,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
         frame_clock_system(w.resource<FrameClock>(), w.resource<Params>());
     });
     schedule.add_system(ecs::Stage::Input, "wave rebuild", wave_rebuild_system);
+    schedule.add_system(ecs::Stage::Input, "environment reload", environment_reload_system);
     schedule.add_system(ecs::Stage::Input, "camera feed", [](ecs::World& w) {
         camera_feed_system(w.resource<CameraFeed>(), w.resource<Params>(), w.resource<FrameClock>(),
                            w.resource<gpu::Device>(), w.resource<CameraEnvironment>());

@@ -60,7 +60,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_right", right)
         .set("u_cam_up", up)
         .set("u_cam_scale", glm::vec2(tan_half * aspect, tan_half))
-        .set("u_env_matrix", env_matrix);
+        .set("u_env_matrix", env_matrix)
+        .set("u_env_rgbm", env.rgbm && !environment_override ? 1 : 0)  // the camera cube is sRGB8
+        .set("u_env_scale", std::exp2(params.f(ParamId::environment_exposure)));
     pass.draw_fullscreen();
 }
 

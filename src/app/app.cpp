@@ -6,17 +6,19 @@
 #include <filesystem>
 #include <thread>
 
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "app/cli.hpp"
 #include "app/engine.hpp"
+#include "app/logging.hpp"
+#include "app/service_notify.hpp"
 #include "app/signals.hpp"
 #include "app/version.hpp"
 #include "assets/image_io.hpp"
 #include "params/config_loader.hpp"
 #include "io/gpio_backend.hpp"
 #include "params/param_docs.hpp"
+#include "platform/console_mode.hpp"
 #include "systems/live_tuning.hpp"
 
 namespace puddle::app {
@@ -89,9 +91,7 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
 }  // namespace
 
 int run(int argc, const char* const* argv) {
-    auto logger = spdlog::stderr_color_mt("puddle");
-    spdlog::set_default_logger(logger);
-    spdlog::set_pattern("%^%l%$: %v");
+    setup_logging(detect_log_style());
 
     auto options = parse_command_line(argc, argv);
     if (!options) {
@@ -126,13 +126,24 @@ int run(int argc, const char* const* argv) {
     if (!engine) return fail(engine.error());
     Engine& e = **engine;
     const bool headless = e.display().kind() == platform::BackendKind::Headless;
-    spdlog::info("{}", e.display().describe());
+    const std::string preset = e.world().resource<systems::LiveTuning>().layers.preset_name();
+    const auto& caps = e.device().caps();
+    spdlog::info("started: {}; GL: {} ({}); config: {}; preset: {}", e.display().describe(), caps.renderer,
+                 caps.version, config_path(o).empty() ? "none" : config_path(o), preset.empty() ? "none" : preset);
 
     long frames = o.frames.value_or(headless ? headless_default_frames : 0);  // 0: run until stopped
     std::string screenshot = o.screenshot;
     if (headless && screenshot.empty() && !o.frames) screenshot = headless_default_screenshot;
 
     StopSignals stop;
+    // On a kiosk screen the text console must not draw over the picture; restored on every exit path.
+    const auto console = e.display().kind() == platform::BackendKind::Kms ? platform::ConsoleGraphicsMode::enter()
+                                                                         : std::nullopt;
+    ServiceNotify service = ServiceNotify::from_environment();
+    if (service.enabled())
+        spdlog::info("systemd: READY after the first frame{}", service.watchdog_interval() > 0
+                         ? fmt::format(", watchdog every {:g} s while frames are presented", service.watchdog_interval() / 2)
+                         : std::string());
     using clock = std::chrono::steady_clock;
     const double fixed_dt = 1.0 / (o.fps_cap > 0 ? o.fps_cap : 60.0);
     auto last = clock::now();
@@ -148,10 +159,12 @@ int run(int argc, const char* const* argv) {
         last = now;
         if (!screenshot.empty() && frames != 0 && n == frames - 1) e.capture_next_frame();
         if (auto r = e.frame(dt); !r) return fail(r.error());
+        service.frame_presented(systems::monotonic_seconds());  // only presented frames feed the watchdog
         if (o.fps_cap > 0 && !headless)
             std::this_thread::sleep_until(now + std::chrono::duration_cast<clock::duration>(
                                                     std::chrono::duration<double>(1.0 / o.fps_cap)));
     }
+    service.stopping();
     systems::save_state(e.world().resource<systems::LiveTuning>());  // knob changes not yet saved
     if (!screenshot.empty()) {
         const assets::Image& image = e.captured().empty() ? e.read_frame() : e.captured();

@@ -41,10 +41,15 @@ Result<CubeImages> load_faces(const std::array<std::string, 6>& paths, std::stri
     CubeImages cube;
     cube.source = std::move(source);
     for (std::size_t i = 0; i < paths.size(); ++i) {
-        auto image = read_image(paths[i], PixelFormat::RGBA8);
+        auto image = read_color_image(paths[i]);
         if (!image) return image.error();
         cube.faces[i] = std::move(image).value();
     }
+    // One HDR face makes the cube HDR: the 8-bit ones are decoded to linear to join it.
+    const bool any_hdr = std::any_of(cube.faces.begin(), cube.faces.end(),
+                                     [](const Image& f) { return f.format == PixelFormat::RGBA32F; });
+    if (any_hdr)
+        for (Image& face : cube.faces) face = to_linear_float(face);
 
     // GL requires square faces of one size; say which file breaks that and against what.
     const Image& first = cube.faces[0];

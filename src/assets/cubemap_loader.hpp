@@ -1,6 +1,7 @@
 #pragma once
 // Environment cubemaps from files: a folder holding px/nx/py/ny/pz/nz in any common image format, or six
-// explicit paths. All faces must be square and of one size.
+// explicit paths. All faces must be square and of one size. Faces come back as read_color_image gives
+// them (8-bit sRGB or linear float); when any face is float, all are made linear float.
 
 #include <array>
 #include <string>

@@ -31,6 +31,14 @@ struct Image {
     }
 };
 
+// An 8-bit sRGB image as linear RGBA32F (a float image is returned as it is).
+Image to_linear_float(const Image& image);
+// A linear RGBA32F image as 8-bit sRGB (clamped to 0..1); an RGBA8 image is returned as it is.
+Image to_srgb8(const Image& image);
+// Half the size in each direction (odd edges dropped), averaging 2x2 blocks; for pictures larger than
+// the GPU takes. Averages in the stored encoding: fine for a one-off shrink.
+Image halve(const Image& image);
+
 // Faces in GL order: +X, -X, +Y, -Y, +Z, -Z (file names px, nx, py, ny, pz, nz). Rows top first, as
 // GL_TEXTURE_CUBE_MAP_POSITIVE_X + i expects them (no vertical flip).
 struct CubeImages {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -109,6 +110,26 @@ Result<Image> read_image(const std::string& path, PixelFormat want) {
         return make_error(ExitCode::Asset, "image: {}: cannot decode: {}", path, one_line(reason));
     }
     in->close();
+    return image;
+}
+
+Result<Image> read_color_image(const std::string& path) {
+    bool is_float = false;
+    {
+        if (auto readable = check_readable(path); !readable) return readable.error();
+        auto in = OIIO::ImageInput::open(path);
+        if (!in)
+            return make_error(ExitCode::Asset, "image: {}: cannot read: {}", path, one_line(OIIO::geterror()));
+        const OIIO::TypeDesc type = in->spec().format;
+        is_float = type.basetype == OIIO::TypeDesc::FLOAT || type.basetype == OIIO::TypeDesc::HALF ||
+                   type.basetype == OIIO::TypeDesc::DOUBLE;
+    }
+    auto image = read_image(path, is_float ? PixelFormat::RGBA32F : PixelFormat::RGBA8);
+    if (!image || !is_float) return image;
+    // 65504 is the largest half float: a sun brighter than that still reads as very bright, not infinite.
+    float* v = image->pixelf(0, 0);
+    for (std::size_t i = 0, n = std::size_t(image->width) * image->height * 4; i < n; ++i)
+        v[i] = std::isfinite(v[i]) ? std::clamp(v[i], 0.0f, 65504.0f) : (v[i] > 0 ? 65504.0f : 0.0f);
     return image;
 }
 

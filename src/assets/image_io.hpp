@@ -12,6 +12,10 @@ namespace puddle::assets {
 // Any format OpenImageIO reads. RGBA8 output converts to 8 bits (grey and RGB gain channels, alpha 255);
 // RGBA32F output keeps the file's values (linear for HDR formats).
 Result<Image> read_image(const std::string& path, PixelFormat want = PixelFormat::RGBA8);
+// Colour as the file stores it: float files (.hdr, .exr, float TIFF) as RGBA32F linear radiance, with
+// negative, NaN and beyond-half-float values clamped so they upload safely; integer files (8 or 16 bits)
+// as RGBA8, sRGB-encoded.
+Result<Image> read_color_image(const std::string& path);
 // PNG, 8 bits per channel, RGBA.
 Result<void> write_png(const std::string& path, const Image& image);
 

@@ -52,6 +52,8 @@ Capabilities probe_capabilities(bool forbid_float_targets) {
     c.external_images = c.has("GL_OES_EGL_image_external_essl3");
     c.debug_labels = c.has("GL_KHR_debug");
     c.anisotropic_filtering = c.has("GL_EXT_texture_filter_anisotropic");
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &c.max_texture_size);
+    glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &c.max_cube_map_size);
     if (c.anisotropic_filtering) glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &c.max_anisotropy);
     return c;
 }

@@ -18,6 +18,8 @@ struct Capabilities {
     bool debug_labels = false;               // KHR_debug: glObjectLabel
     bool anisotropic_filtering = false;      // EXT_texture_filter_anisotropic
     float max_anisotropy = 1.0f;
+    int max_texture_size = 2048;   // GL_MAX_TEXTURE_SIZE (2048 is the GLES 3.0 minimum)
+    int max_cube_map_size = 2048;  // GL_MAX_CUBE_MAP_TEXTURE_SIZE
 
     bool has(const char* extension) const;
     std::string extensions;  // space separated, as the driver reported them

@@ -157,7 +157,7 @@ RenderPass Device::begin_pass(const RenderPassDesc& desc) { return RenderPass(de
 
 void Device::read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba) {
     const int w = target.size.x, h = target.size.y;
-    glBindFramebuffer(GL_FRAMEBUFFER, target.texture ? target.texture->framebuffer(target.face) : 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, target.texture ? target.texture->framebuffer(target.face, target.level) : 0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     // GL's row 0 is the bottom of the picture; files start at the top.

@@ -47,9 +47,10 @@ public:
 
     // Reads a frame into `rgba` (size.x * size.y * 4 bytes), top row first, as PNG files expect.
     void read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba);
-    // Reads level 0 of a 2D float or integer texture as 4 floats per texel (integers converted as is),
-    // rows in GL order (row 0 = t 0). For tests and tools, not for the frame loop.
-    std::vector<float> read_texture(const Texture& texture, int face = 0);  // face: of a cube map
+    // Reads level 0 of a 2D texture (or of one cube face) as 4 floats per texel (integers converted as
+    // is, 8-bit formats as stored / 255), rows in GL order (row 0 = t 0). For tests and tools, not for
+    // the frame loop.
+    std::vector<float> read_texture(const Texture& texture, int face = 0);
     // Waits until the GPU is done: benchmarks time whole passes with it.
     void finish();
 

@@ -14,7 +14,7 @@ RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
     : store_(desc.store), labels_(&labels) {
     labels_->push_group(desc.label);
     is_default_framebuffer_ = desc.target.texture == nullptr;
-    glBindFramebuffer(GL_FRAMEBUFFER, is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer(desc.target.face));
+    glBindFramebuffer(GL_FRAMEBUFFER, is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer(desc.target.face, desc.target.level));
     glViewport(0, 0, desc.target.size.x, desc.target.size.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);

@@ -75,17 +75,21 @@ void Texture::generate_mipmaps() {
     glGenerateMipmap(target);
 }
 
-GLuint Texture::framebuffer(int face) const {
-    auto& fbo = fbos_[static_cast<std::size_t>(face)];
+GLuint Texture::framebuffer(int face, int level) const {
+    const bool cube = desc_.kind == TextureKind::Cube;
+    const std::size_t slot = static_cast<std::size_t>(cube ? face : 0);
+    auto& fbo = fbos_[slot];
+    if (fbo && fbo_levels_[slot] == level) return fbo.get();
     if (!fbo) {
         GLuint id_fbo = 0;
         glGenFramebuffers(1, &id_fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, id_fbo);
-        const GLenum target =
-            desc_.kind == TextureKind::Cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GLenum(GL_TEXTURE_2D);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, id(), 0);
         fbo = GlHandle<detail::delete_framebuffer>(id_fbo);
     }
+    // Another level re-attaches (mip levels are rendered once, at load; frames use level 0).
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.get());
+    const GLenum target = cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GL_TEXTURE_2D;
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, id(), level);
+    fbo_levels_[slot] = level;
     return fbo.get();
 }
 

@@ -54,8 +54,8 @@ public:
     // Level 0 of a 2D texture from rows `row_bytes` apart (a driver's bytesperline, often padded).
     void upload_rows(std::span<const std::byte> data, int row_bytes);
     void generate_mipmaps();
-    // The framebuffer that renders into level 0 (of one face of a cube map; made on first use).
-    GLuint framebuffer(int face = 0) const;
+    // The framebuffer that renders into a level (of one face for cube maps), made on first use.
+    GLuint framebuffer(int face = 0, int level = 0) const;
 
 private:
     friend class Device;
@@ -63,6 +63,7 @@ private:
     TextureDesc desc_;
     GlHandle<detail::delete_texture> id_;
     mutable std::array<GlHandle<detail::delete_framebuffer>, 6> fbos_;  // one per cube face
+    mutable std::array<int, 6> fbo_levels_{};                           // the level each one holds
 };
 
 enum class Filter { Nearest, Linear };

@@ -84,6 +84,23 @@ TEST(EndToEnd, MissingImageExitsThreeNamingThePath) {
     EXPECT_NE(r.output.find("/nonexistent/paving.jpg"), std::string::npos) << r.output;
 }
 
+TEST(EndToEnd, EnvironmentOfTheWrongShapeExitsThreeNamingPathAndShape) {
+    TempDir dir;
+    const std::string wide = (dir / "wide.png").string(), cross = (dir / "cross.png").string();
+    ASSERT_TRUE(assets::write_png(wide, assets::Image::make(300, 200)).ok());
+    ASSERT_TRUE(assets::write_png(cross, assets::Image::make(1022, 768)).ok());
+    const Outcome panorama = run_puddle("-b headless --frames 1 --set environment.image=" + wide);
+    EXPECT_EQ(panorama.exit_code, 3) << panorama.output;
+    EXPECT_NE(panorama.output.find(wide + " is 300x200: expected an equirectangular panorama twice as wide as high"),
+              std::string::npos)
+        << panorama.output;
+    const Outcome bad_cross = run_puddle("-b headless --frames 1 --set environment.image=" + cross);
+    EXPECT_EQ(bad_cross.exit_code, 3) << bad_cross.output;
+    EXPECT_NE(bad_cross.output.find(cross + " is 1022x768: a horizontal cube cross must be 4 square faces wide"),
+              std::string::npos)
+        << bad_cross.output;
+}
+
 TEST(EndToEnd, HelpAndListParamsTeach) {
     const Outcome help = run_puddle("--help");
     EXPECT_EQ(help.exit_code, 0);

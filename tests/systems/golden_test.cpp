@@ -10,6 +10,7 @@
 
 #include "assets/image_io.hpp"
 #include "support/test_support.hpp"
+#include "systems/environment_test_support.hpp"
 #include "systems/render_test_support.hpp"
 
 namespace puddle::test {
@@ -52,6 +53,18 @@ TEST(Golden, DownpourMirrorTurnedSky) {
                                           "water.reflectivity=1", "environment.rotation=2.5", "look.fog_density=0.02",
                                           "look.vignette=0.8", "camera.position=25,10,0", "camera.target=-40,2,0"},
                                          90, golden_size));
+}
+
+// An HDR environment (made here: a city at night whose windows are 4 to 16 times brighter than white,
+// written as a Radiance .hdr like a Poly Haven download) reflected in the rain: the README's HDR picture.
+TEST(Golden, HdrCityLightsInTheRain) {
+    TempDir dir;
+    const std::string sky = (dir / "city.hdr").string();
+    write_float_image(sky, city_lights_panorama(1024));
+    check_golden("hdr_city_lights", render_with({"environment.image=" + sky, "camera.position=0,9,34",
+                                                 "camera.target=0,3,-10", "rain.drop_count=24", "water.reflectivity=1",
+                                                 "ground.checkerboard=false", "look.fog_density=0.004"},
+                                                90, golden_size));
 }
 
 }  // namespace

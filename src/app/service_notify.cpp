@@ -1,0 +1,89 @@
+#include "app/service_notify.hpp"
+
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <cstring>
+
+#include <spdlog/spdlog.h>
+
+namespace puddle::app {
+
+ServiceNotify ServiceNotify::from_environment() {
+    ServiceNotify n;
+    const char* socket_path = std::getenv("NOTIFY_SOCKET");
+    if (!socket_path || !*socket_path || std::strlen(socket_path) >= sizeof(sockaddr_un::sun_path)) return n;
+    n.address_ = socket_path;
+    // Non-blocking: if systemd is slow to read, a ping is dropped rather than a frame stalled.
+    n.fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+    if (n.fd_ < 0) {
+        spdlog::warn("systemd: cannot open the notify socket: {}", std::strerror(errno));
+        return n;
+    }
+    const char* usec = std::getenv("WATCHDOG_USEC");
+    const char* pid = std::getenv("WATCHDOG_PID");
+    const bool ours = !pid || std::strtol(pid, nullptr, 10) == ::getpid();
+    if (usec && ours) n.watchdog_seconds_ = static_cast<double>(std::strtoull(usec, nullptr, 10)) * 1e-6;
+    return n;
+}
+
+ServiceNotify::ServiceNotify(ServiceNotify&& o) noexcept
+    : fd_(o.fd_), address_(std::move(o.address_)), watchdog_seconds_(o.watchdog_seconds_),
+      ready_sent_(o.ready_sent_), last_ping_(o.last_ping_) {
+    o.fd_ = -1;
+}
+
+ServiceNotify& ServiceNotify::operator=(ServiceNotify&& o) noexcept {
+    if (this != &o) {
+        if (fd_ >= 0) ::close(fd_);
+        fd_ = o.fd_;
+        address_ = std::move(o.address_);
+        watchdog_seconds_ = o.watchdog_seconds_;
+        ready_sent_ = o.ready_sent_;
+        last_ping_ = o.last_ping_;
+        o.fd_ = -1;
+    }
+    return *this;
+}
+
+ServiceNotify::~ServiceNotify() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+bool ServiceNotify::send(std::string_view message) {
+    if (fd_ < 0) return false;
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    std::memcpy(addr.sun_path, address_.data(), address_.size());
+    if (addr.sun_path[0] == '@') addr.sun_path[0] = '\0';  // abstract socket
+    const auto len = static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + address_.size());
+    return ::sendto(fd_, message.data(), message.size(), MSG_NOSIGNAL, reinterpret_cast<const sockaddr*>(&addr),
+                    len) == static_cast<ssize_t>(message.size());
+}
+
+void ServiceNotify::frame_presented(double now) {
+    if (fd_ < 0) return;
+    if (!ready_sent_) {
+        ready_sent_ = true;
+        last_ping_ = now;
+        send("READY=1\nSTATUS=Showing frames");
+        return;
+    }
+    if (watchdog_seconds_ > 0 && now - last_ping_ >= watchdog_seconds_ / 2) {
+        last_ping_ = now;
+        send("WATCHDOG=1");
+    }
+}
+
+void ServiceNotify::status(std::string_view text) {
+    if (fd_ < 0) return;
+    std::string m = "STATUS=";
+    m += text;
+    send(m);
+}
+
+void ServiceNotify::stopping() { send("STOPPING=1"); }
+
+}  // namespace puddle::app

@@ -1,0 +1,42 @@
+#pragma once
+// The systemd notify protocol (sd_notify), spoken directly: one datagram per message to the socket in
+// $NOTIFY_SOCKET. READY=1 goes out after the first presented frame; WATCHDOG=1 only when frames are
+// really presented, at most every half watchdog period, so a hung GPU or display stops the pings and
+// systemd restarts the service. Without $NOTIFY_SOCKET (not under systemd) every call does nothing.
+
+#include <string>
+#include <string_view>
+
+namespace puddle::app {
+
+class ServiceNotify {
+public:
+    // Reads NOTIFY_SOCKET and WATCHDOG_USEC (and WATCHDOG_PID, which must be ours or unset).
+    static ServiceNotify from_environment();
+    ServiceNotify() = default;
+    ServiceNotify(ServiceNotify&& other) noexcept;
+    ServiceNotify& operator=(ServiceNotify&& other) noexcept;
+    ServiceNotify(const ServiceNotify&) = delete;
+    ServiceNotify& operator=(const ServiceNotify&) = delete;
+    ~ServiceNotify();
+
+    bool enabled() const { return fd_ >= 0; }
+    double watchdog_interval() const { return watchdog_seconds_; }  // 0: no watchdog
+
+    // Called after each presented frame at monotonic time `now`: READY=1 the first time, then
+    // WATCHDOG=1 whenever half the watchdog period has passed since the last ping.
+    void frame_presented(double now);
+    // STATUS=... (shown by systemctl status) and STOPPING=1.
+    void status(std::string_view text);
+    void stopping();
+
+private:
+    bool send(std::string_view message);
+    int fd_ = -1;
+    std::string address_;  // the socket path; a leading '@' is the abstract namespace
+    double watchdog_seconds_ = 0;
+    bool ready_sent_ = false;
+    double last_ping_ = -1e9;
+};
+
+}  // namespace puddle::app

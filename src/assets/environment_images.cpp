@@ -1,0 +1,78 @@
+#include "assets/environment_images.hpp"
+
+#include <array>
+#include <filesystem>
+#include <system_error>
+
+#include "assets/cube_cross.hpp"
+#include "assets/cubemap_loader.hpp"
+#include "assets/image_io.hpp"
+#include "assets/procedural.hpp"
+
+namespace puddle::assets {
+namespace {
+
+Result<std::array<std::string, 6>> split_six(const std::string& spec) {
+    std::array<std::string, 6> paths;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < 6; ++i) {
+        const std::size_t bar = spec.find('|', start);
+        if ((i < 5) == (bar == std::string::npos))
+            return make_error(
+                ExitCode::Asset,
+                "environment.image: expected a folder, one image or six paths (px, nx, py, ny, pz, nz), "
+                "got '{}'",
+                spec);
+        paths[i] = spec.substr(start, bar == std::string::npos ? std::string::npos : bar - start);
+        start = bar + 1;
+    }
+    return paths;
+}
+
+// One image: a panorama or a cross, told apart by its proportions.
+Result<EnvironmentImages> load_single_image(const std::string& path) {
+    auto image = read_color_image(path);
+    if (!image) return image.error();
+    EnvironmentImages env;
+    env.source = path;
+    const int w = image->width, h = image->height;
+    if (const CrossLayout layout = cross_layout(w, h); layout != CrossLayout::None) {
+        auto cube = split_cube_cross(*image, layout, path);
+        if (!cube) return cube.error();
+        env.faces = std::move(cube).value();
+        return env;
+    }
+    if (w != 2 * h)
+        return make_error(
+            ExitCode::Asset,
+            "environment.image: {} is {}x{}: expected an equirectangular panorama twice as wide as high "
+            "(2:1, e.g. 2048x1024), or a cube cross (4:3 or 3:4)",
+            path, w, h);
+    env.panorama = std::move(image).value();
+    return env;
+}
+
+}  // namespace
+
+Result<EnvironmentImages> load_environment_images(const std::string& spec) {
+    EnvironmentImages env;
+    Result<CubeImages> cube = CubeImages{};
+    std::error_code ec;
+    if (spec.empty()) {
+        cube = night_sky_cubemap(256);
+    } else if (spec.find('|') != std::string::npos) {
+        auto paths = split_six(spec);
+        if (!paths) return paths.error();
+        cube = load_cubemap_faces(*paths);
+    } else if (std::filesystem::is_directory(spec, ec)) {
+        cube = load_cubemap_folder(spec);
+    } else {
+        return load_single_image(spec);
+    }
+    if (!cube) return cube.error();
+    env.source = cube->source;
+    env.faces = std::move(cube).value();
+    return env;
+}
+
+}  // namespace puddle::assets

@@ -1,0 +1,28 @@
+#pragma once
+// What `environment.image` names, read from disk: a folder of six faces, six paths joined by '|', a cube
+// cross in one image, or an equirectangular panorama (2:1) that the GPU turns into a cube at load.
+// 8-bit files stay sRGB-encoded RGBA8; float files (.hdr, .exr) stay linear RGBA32F.
+
+#include <optional>
+#include <string>
+
+#include "assets/image.hpp"
+#include "util/result.hpp"
+
+namespace puddle::assets {
+
+struct EnvironmentImages {
+    std::optional<CubeImages> faces;  // six faces, ready to upload
+    Image panorama;                   // otherwise: an equirectangular panorama, width = 2 * height
+    std::string source;               // for logs
+
+    bool hdr() const {
+        return faces ? faces->faces[0].format == PixelFormat::RGBA32F
+                     : panorama.format == PixelFormat::RGBA32F;
+    }
+};
+
+// Empty `spec`: the procedural night sky.
+Result<EnvironmentImages> load_environment_images(const std::string& spec);
+
+}  // namespace puddle::assets

@@ -1,0 +1,268 @@
+// The environment on the GPU: a panorama becomes a cube map whose faces look where GL says they look,
+// in half floats or, where half-float targets are missing (forced here), RGBM-style RGBA8; the real
+// files of ../shared/assets load and render; changing the images at run time reloads them, and a bad
+// one keeps what is shown.
+#include "systems/environment_system.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include "assets/image_io.hpp"
+#include "assets/rgbm.hpp"
+#include "params/config_loader.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
+#include "systems/environment_test_support.hpp"
+#include "systems/equirect_to_cube.hpp"
+#include "systems/render_test_support.hpp"
+
+namespace puddle::test {
+namespace {
+
+using params::ParamId;
+using params::ParamSource;
+
+// HDR colours, one per axis in GL face order (+X, -X, +Y, -Y, +Z, -Z).
+const std::array<glm::vec3, 6> kAxisColours{{{4.0f, 0.1f, 0.1f},
+                                             {0.1f, 2.0f, 0.1f},
+                                             {0.1f, 0.1f, 8.0f},
+                                             {0.5f, 0.5f, 0.05f},
+                                             {0.05f, 1.5f, 1.5f},
+                                             {3.0f, 0.05f, 3.0f}}};
+
+std::size_t dominant_axis(glm::vec3 d) {
+    const glm::vec3 a = glm::abs(d);
+    if (a.x >= a.y && a.x >= a.z) return d.x > 0 ? 0 : 1;
+    if (a.y >= a.z) return d.y > 0 ? 2 : 3;
+    return d.z > 0 ? 4 : 5;
+}
+
+// Where GL samples face `face` at (s, t): the major-axis table of the GLES 3.0 specification, inverted.
+glm::vec3 face_direction(int face, float s, float t) {
+    const float sc = 2 * s - 1, tc = 2 * t - 1;
+    switch (face) {
+        case 0:
+            return {1, -tc, -sc};
+        case 1:
+            return {-1, -tc, sc};
+        case 2:
+            return {sc, 1, tc};
+        case 3:
+            return {sc, -1, -tc};
+        case 4:
+            return {sc, -tc, 1};
+        default:
+            return {-sc, -tc, -1};
+    }
+}
+
+// Texel (x, row) of a cube face read back from the GPU, as linear radiance whatever the storage.
+glm::vec3 cube_texel(const std::vector<float>& face, int size, int x, int row, bool rgbm) {
+    const float* p = face.data() + (std::size_t(row) * size + x) * 4;
+    if (!rgbm) return {p[0], p[1], p[2]};
+    std::array<std::uint8_t, 4> bytes{};
+    for (int c = 0; c < 4; ++c) bytes[c] = static_cast<std::uint8_t>(std::lround(p[c] * 255.0f));
+    const auto v = assets::decode_rgbm(bytes.data());
+    return {v[0], v[1], v[2]};
+}
+
+// RGBM shares one scale: each channel is exact to a fraction of the brightest one.
+void expect_near_relative(glm::vec3 got, glm::vec3 want, float tolerance, const std::string& what) {
+    const float brightest = std::max({want.r, want.g, want.b});
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[c], want[c], tolerance * brightest) << what << " channel " << c;
+}
+
+class EquirectToCube : public ::testing::TestWithParam<bool> {};  // true: forced RGBM fallback
+
+TEST_P(EquirectToCube, SixDirectionsOfSixColoursGiveFaceCentresOfThoseColours) {
+    const bool forced_fallback = GetParam();
+    auto engine = make_engine(make_params({}), {32, 32}, {.forbid_float_targets = forced_fallback});
+    ASSERT_TRUE(engine);
+    gpu::Device& device = engine->device();
+    ASSERT_EQ(device.caps().half_float_render_targets, !forced_fallback);
+    const assets::Image panorama =
+        panorama_of(256, [](glm::vec3 d) { return kAxisColours[dominant_axis(d)]; });
+
+    const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
+    auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback);
+    ASSERT_TRUE(cube.ok()) << cube.error().message;
+    for (int face = 0; face < 6; ++face) {
+        const auto texels = device.read_texture(*cube, face);
+        const glm::vec3 centre = cube_texel(texels, 32, 16, 16, forced_fallback);
+        expect_near_relative(centre, kAxisColours[std::size_t(face)], 0.02f,
+                             std::string("face ") + assets::cube_face_names[std::size_t(face)]);
+    }
+}
+
+TEST_P(EquirectToCube, EveryTexelHoldsThePanoramaInTheDirectionGlSamplesIt) {
+    const bool forced_fallback = GetParam();
+    auto engine = make_engine(make_params({}), {32, 32}, {.forbid_float_targets = forced_fallback});
+    ASSERT_TRUE(engine);
+    gpu::Device& device = engine->device();
+    // A smooth function of direction, so any turn or mirror of a face shows as a wrong colour.
+    auto radiance = [](glm::vec3 d) { return 0.5f + 0.5f * d; };
+    const int size = 16;
+    const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
+    auto cube = systems::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback);
+    ASSERT_TRUE(cube.ok()) << cube.error().message;
+    for (int face = 0; face < 6; ++face) {
+        const auto texels = device.read_texture(*cube, face);
+        for (int row = 0; row < size; ++row)
+            for (int x = 0; x < size; ++x) {
+                const glm::vec3 want =
+                    radiance(glm::normalize(face_direction(face, (x + 0.5f) / size, (row + 0.5f) / size)));
+                const glm::vec3 got = cube_texel(texels, size, x, row, forced_fallback);
+                ASSERT_LT(glm::length(got - want), 0.03f)
+                    << assets::cube_face_names[std::size_t(face)] << " texel " << x << "," << row;
+            }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(HalfFloatAndRgbm, EquirectToCube, ::testing::Values(false, true),
+                         [](const auto& test_case) {
+                             return test_case.param ? "ForcedRgbmFallback" : "HalfFloat";
+                         });
+
+TEST(EnvironmentSystem, FaceSizeIsAQuarterOfThePanoramaUnlessSet) {
+    EXPECT_EQ(systems::auto_face_size(1024, 16384), 256);
+    EXPECT_EQ(systems::auto_face_size(8192, 16384), 1024) << "capped: a Pi has little memory";
+    EXPECT_EQ(systems::auto_face_size(8192, 512), 512) << "never past the GPU's limit";
+
+    TempDir dir;
+    const std::string path = (dir / "sky.exr").string();
+    write_float_image(path, panorama_of(128, [](glm::vec3) { return glm::vec3(2.0f); }));
+    auto automatic = make_engine(make_params({"environment.image=" + path}), {32, 32});
+    ASSERT_TRUE(automatic);
+    EXPECT_EQ(automatic->world().resource<systems::Environment>().cube.width(), 32);
+    EXPECT_TRUE(automatic->world().resource<systems::Environment>().hdr);
+    auto chosen =
+        make_engine(make_params({"environment.image=" + path, "environment.face_size=20"}), {32, 32});
+    ASSERT_TRUE(chosen);
+    EXPECT_EQ(chosen->world().resource<systems::Environment>().cube.width(), 20);
+}
+
+TEST(EnvironmentSystem, HdrPicksHalfFloatOrForcedRgbmAndLdrStaysSrgb) {
+    TempDir dir;
+    const std::string hdr = (dir / "sky.hdr").string();
+    write_float_image(hdr, panorama_of(64, [](glm::vec3) { return glm::vec3(3.0f); }));
+    auto half = make_engine(make_params({"environment.image=" + hdr}), {32, 32});
+    ASSERT_TRUE(half);
+    EXPECT_EQ(half->world().resource<systems::Environment>().cube.desc().format, gpu::TextureFormat::RGBA16F);
+    EXPECT_FALSE(half->world().resource<systems::Environment>().rgbm);
+    auto fallback =
+        make_engine(make_params({"environment.image=" + hdr}), {32, 32}, {.forbid_float_targets = true});
+    ASSERT_TRUE(fallback);
+    EXPECT_EQ(fallback->world().resource<systems::Environment>().cube.desc().format,
+              gpu::TextureFormat::RGBA8);
+    EXPECT_TRUE(fallback->world().resource<systems::Environment>().rgbm);
+    auto ldr = make_engine(make_params({}), {32, 32});
+    ASSERT_TRUE(ldr);
+    EXPECT_EQ(ldr->world().resource<systems::Environment>().cube.desc().format, gpu::TextureFormat::SRGB8_A8);
+}
+
+// The top rows of a picture: the sky seen directly, above the puddle.
+assets::Image top_rows(const assets::Image& img, int rows) {
+    assets::Image out = assets::Image::make(img.width, rows);
+    std::copy(img.data.begin(), img.data.begin() + std::ptrdiff_t(out.data.size()), out.data.begin());
+    return out;
+}
+
+TEST(EnvironmentSystem, ForcedRgbmFallbackShowsTheSameSky) {
+    TempDir dir;
+    const std::string path = (dir / "sky.exr").string();
+    // Filtering between a lit texel and a dark one gives RGBM less than their average (rgbm.hpp), so the
+    // lights' edges differ by a few levels: a looser bound than the goldens', and the lights stay white.
+    write_float_image(path, city_lights_panorama(1024));
+    const params::Params p =
+        make_params({"environment.image=" + path, "rain.intensity=0", "wave.resolution=128",
+                     "camera.position=0,14,30", "camera.target=0,9,0"});
+    auto half = make_engine(p, {160, 90});
+    auto rgbm = make_engine(p, {160, 90}, {.forbid_float_targets = true});
+    ASSERT_TRUE(half && rgbm);
+    // Only the sky seen directly: forcing the fallback also gives the water an 8-bit surface, whose
+    // slopes differ slightly (its own test covers that).
+    const assets::Image a = top_rows(render_frames(*half, 3), 36), b = top_rows(render_frames(*rgbm, 3), 36);
+    const ImageDiff d = compare_images(a, b, 24);
+    if (d.mean_abs_diff >= 5.0) {
+        (void)assets::write_png((output_dir() / "rgbm_fallback.half.png").string(), a);
+        (void)assets::write_png((output_dir() / "rgbm_fallback.rgbm.png").string(), b);
+    }
+    EXPECT_LT(d.mean_abs_diff, 5.0);
+    EXPECT_LT(d.fraction_over, 0.12);
+    EXPECT_GT(luma_stddev(a, 0, 0, 160, 36), 20.0) << "lit windows against a dark sky, not a flat fill";
+    auto brightest = [](const assets::Image& img) {
+        int m = 0;
+        for (std::size_t i = 0; i < img.data.size(); i += 4) m = std::max<int>(m, img.data[i + 1]);
+        return m;
+    };
+    EXPECT_GE(brightest(b), 250) << "HDR windows stay white through RGBM";
+    EXPECT_GE(brightest(a), 250);
+}
+
+TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
+    TempDir dir;
+    assets::Image red = assets::Image::make(8, 8);
+    for (std::size_t i = 0; i < red.data.size(); i += 4) red.data[i] = 255, red.data[i + 3] = 255;
+    const std::string cross = (dir / "cross.png").string();
+    ASSERT_TRUE(assets::write_png(cross,
+                                  [] {
+                                      assets::Image c = assets::Image::make(32, 24);
+                                      std::fill(c.data.begin(), c.data.end(), std::uint8_t{200});
+                                      return c;
+                                  }())
+                    .ok());
+    const std::string ground = (dir / "red.png").string();
+    ASSERT_TRUE(assets::write_png(ground, red).ok());
+
+    auto engine = make_engine(make_params({"rain.intensity=0", "ground.checkerboard=false"}), {96, 54});
+    ASSERT_TRUE(engine);
+    const assets::Image before = render_frames(*engine, 2);
+    auto& params = engine->params();
+    auto set = [&](ParamId id, params::ParamValue v) { params.set(id, std::move(v), ParamSource::Knob); };
+
+    set(ParamId::environment_image, std::string("/nonexistent/sky.hdr"));
+    set(ParamId::ground_image, (dir / "missing.jpg").string());
+    const assets::Image kept = render_frames(*engine, 2);
+    EXPECT_EQ(compare_images(before, kept, 0).max_channel_diff, 0) << "a failed reload changes nothing";
+    EXPECT_EQ(engine->world().resource<systems::Environment>().source, "procedural night sky");
+    EXPECT_EQ(engine->world().resource<systems::Ground>().source, "procedural cobblestones");
+
+    set(ParamId::environment_image, cross);
+    set(ParamId::ground_image, ground);
+    const assets::Image changed = render_frames(*engine, 2);
+    EXPECT_EQ(engine->world().resource<systems::Environment>().source, cross);
+    EXPECT_EQ(engine->world().resource<systems::Ground>().source, ground);
+    EXPECT_GT(compare_images(before, changed, 8).mean_abs_diff, 10.0);
+
+    const std::string pano = (dir / "pano.exr").string();
+    write_float_image(pano, panorama_of(64, [](glm::vec3) { return glm::vec3(1.0f); }));
+    set(ParamId::environment_image, pano);
+    set(ParamId::environment_face_size, 12);
+    (void)render_frames(*engine, 1);
+    EXPECT_EQ(engine->world().resource<systems::Environment>().cube.width(), 12);
+}
+
+// ../shared/assets: the Poly Haven HDRI, the cube folder, the paving photo and a 16-bit PNG render.
+TEST(EnvironmentSystemShared, RealFilesLoadAndRender) {
+    const std::string assets = shared_assets_dir();
+    if (assets.empty()) GTEST_SKIP() << "../shared/assets not found: the real-file tests need it";
+    const assets::Image plain = render_with({"rain.intensity=0"}, 3);
+    const std::array<std::initializer_list<std::string>, 3> cases{{
+        {"rain.intensity=0", "environment.image=" + assets + "/env.hdr", "ground.checkerboard=false",
+         "ground.image=" + assets + "/pavement.jpg"},
+        {"rain.intensity=0", "environment.image=" + assets + "/cubemap"},
+        {"rain.intensity=0", "ground.checkerboard=false", "ground.image=" + assets + "/extra/rgb16.png",
+         "water.turbidity=0"},
+    }};
+    for (const auto& sets : cases) {
+        const assets::Image img = render_with(sets, 3);
+        ASSERT_FALSE(img.empty());
+        EXPECT_GT(luma_stddev(img, 0, 0, img.width, img.height), 5.0) << sets.begin()[1];
+        EXPECT_GT(compare_images(plain, img, 8).mean_abs_diff, 3.0) << "the file shows";
+    }
+}
+
+}  // namespace
+}  // namespace puddle::test
