@@ -6,10 +6,16 @@
 #include "params/param_store.hpp"
 #include "systems/camera_environment.hpp"
 #include "systems/camera_system.hpp"
+#include "systems/analytic_ripple_system.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/environment_system.hpp"
 #include "systems/frame_clock.hpp"
+#include "systems/grid_drop_system.hpp"
+#include "systems/ocean_system.hpp"
+#include "systems/rain_overlay_system.hpp"
 #include "systems/render_system.hpp"
+#include "systems/scene_select.hpp"
+#include "systems/street_system.hpp"
 #include "systems/surface_system.hpp"
 #include "systems/wave_system.hpp"
 
@@ -41,6 +47,33 @@ void wave_rebuild_system(ecs::World& world) {
     if (auto r = build_field_and_surface(world); !r) spdlog::error("{}", r.error().message);
 }
 
+// The puddle's surface comes from the wave field only with the pulse drops; analytic and grid drops
+// write it themselves, and the other scenes need no simulation at all.
+bool wave_field_in_use(const Params& params) {
+    return selected_scene(params) == Scene::Puddle && selected_drop_model(params) == DropModel::Pulse;
+}
+
+// Start-up builds the pipelines of the look the config chose, so a broken shader stops start-up with its
+// message; looks chosen later are built by their systems on first use.
+Result<void> prepare_selected_look(ecs::World& world) {
+    auto& device = world.resource<gpu::Device>();
+    const Params& params = world.resource<Params>();
+    const Surface& surface = world.resource<Surface>();
+    if (params.b(ParamId::overlay_rain))
+        if (auto r = prepare_rain_overlay(device, world.resource<RainOverlay>()); !r) return r;
+    switch (selected_scene(params)) {
+        case Scene::Ocean: return prepare_ocean(device, world.resource<OceanRenderer>());
+        case Scene::Street: return prepare_street(device, world.resource<StreetRenderer>());
+        case Scene::Puddle: break;
+    }
+    switch (selected_drop_model(params)) {
+        case DropModel::Analytic: return prepare_analytic_ripples(device, surface, world.resource<AnalyticRipples>());
+        case DropModel::Grid: return prepare_grid_drops(device, surface, world.resource<GridDrops>());
+        case DropModel::Pulse: break;
+    }
+    return {};
+}
+
 }  // namespace
 
 Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
@@ -64,6 +97,12 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     if (auto r = build_field_and_surface(world); !r) return r;
     if (auto r = build_puddle_renderer(device, world.resource<Surface>(), world.insert_resource<PuddleRenderer>()); !r)
         return r;
+    world.insert_resource<AnalyticRipples>();
+    world.insert_resource<GridDrops>();
+    world.insert_resource<OceanRenderer>();
+    world.insert_resource<StreetRenderer>();
+    world.insert_resource<RainOverlay>();
+    if (auto r = prepare_selected_look(world); !r) return r;
 
     schedule.set_step_counter([](ecs::World& w) { return w.resource<FrameClock>().steps_due; });
 
@@ -80,25 +119,49 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.add_system(ecs::Stage::Simulate, "begin step",
                         [](ecs::World& w) { begin_step_system(w.resource<FrameClock>()); });
     schedule.add_system(ecs::Stage::Simulate, "drops", [](ecs::World& w) {
+        if (!wave_field_in_use(w.resource<Params>())) return;
         drop_system(w.resource<Params>(), w.resource<FrameClock>(), w, w.resource<DropSlots>(),
                     w.resource<LiveDrops>());
     });
     schedule.add_system(ecs::Stage::Simulate, "wave", [](ecs::World& w) {
+        if (!wave_field_in_use(w.resource<Params>())) return;
         wave_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<LiveDrops>(),
                     w.resource<WaveField>());
     });
 
     schedule.add_system(ecs::Stage::Render, "surface", [](ecs::World& w) {
+        if (!wave_field_in_use(w.resource<Params>())) return;
         surface_system(w.resource<gpu::Device>(), w.resource<WaveField>(), w.resource<Surface>());
     });
     schedule.add_system(ecs::Stage::Render, "camera environment", [](ecs::World& w) {
         camera_environment_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Environment>(),
                                   w.resource<CameraEnvironment>());
     });
+    schedule.add_system(ecs::Stage::Render, "analytic ripples", [](ecs::World& w) {
+        analytic_ripple_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
+                               w.resource<AnalyticRipples>(), w.resource<Surface>());
+    });
+    schedule.add_system(ecs::Stage::Render, "grid drops", [](ecs::World& w) {
+        grid_drop_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
+                         w.resource<GridDrops>(), w.resource<Surface>());
+    });
     schedule.add_system(ecs::Stage::Render, "puddle", [](ecs::World& w) {
+        if (selected_scene(w.resource<Params>()) != Scene::Puddle) return;
         render_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Surface>(),
                       w.resource<Environment>(), w.resource<Ground>(), w.resource<PuddleRenderer>(),
                       w.resource<RenderTarget>(), w.resource<CameraEnvironment>().reflection());
+    });
+    schedule.add_system(ecs::Stage::Render, "ocean", [](ecs::World& w) {
+        ocean_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
+                     w.resource<OceanRenderer>(), w.resource<RenderTarget>());
+    });
+    schedule.add_system(ecs::Stage::Render, "street", [](ecs::World& w) {
+        street_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
+                      w.resource<StreetRenderer>(), w.resource<RenderTarget>());
+    });
+    schedule.add_system(ecs::Stage::Render, "rain overlay", [](ecs::World& w) {
+        rain_overlay_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
+                            w.resource<RainOverlay>(), w.resource<RenderTarget>());
     });
     return {};
 }

@@ -11,8 +11,13 @@ namespace puddle::systems {
 // Needs the resources gpu::Device, params::Params and RenderTarget in the world. Loads the environment
 // and ground (errors: exit code 3), builds the GPU resources and registers:
 //   input:    frame clock, wave field rebuild (when wave.resolution or wave.float_field change)
-//   simulate: begin step, drops, wave step               (once per fixed step)
-//   render:   surface, puddle
+//   simulate: begin step, drops, wave step               (once per fixed step; pulse drops only)
+//   render:   surface | analytic ripples | grid drops    (the puddle's surface, by drops.model)
+//             puddle | ocean | street                    (by scene.kind)
+//             rain overlay                               (overlay.rain)
+// Each system returns early when the parameters do not choose it, so a changed scene.kind or
+// drops.model switches the look on the next frame; the pipelines of the look chosen at start-up are
+// built here (errors stop start-up), others on first use.
 Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule);
 
 }  // namespace puddle::systems

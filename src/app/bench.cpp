@@ -3,7 +3,8 @@
 // between machines better than milliseconds do, and raymarch/intersect is the figure DESIGN.md
 // ("Fidelity and speed") asks for.
 //
-// Run:   build/puddle-bench                                    (about a minute on llvmpipe)
+// Run:   build/puddle-bench                                    (a few minutes on llvmpipe)
+//        build/puddle-bench --benchmark_filter='look|drop_pass'  (scenes and drop models only)
 //        build/puddle-bench --benchmark_filter='render|floor'  (any Google Benchmark flag works)
 //        build/puddle-bench --benchmark_min_time=0.5           (quicker; the default here is 2 s)
 // The summary table goes to stdout after the runs; with --benchmark_format=json prefer
@@ -30,8 +31,12 @@
 #include "app/engine.hpp"
 #include "camera/mjpeg_decoder.hpp"
 #include "systems/camera_environment.hpp"
+#include "assets/procedural.hpp"
+#include "params/config_loader.hpp"
+#include "systems/analytic_ripple_system.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/frame_clock.hpp"
+#include "systems/grid_drop_system.hpp"
 #include "systems/render_system.hpp"
 #include "systems/surface_system.hpp"
 #include "systems/wave_system.hpp"
@@ -303,6 +308,69 @@ void bench_camera_mjpeg(benchmark::State& state) {
 
 void print_camera_summary(const class Collector& c);
 
+// Scenes and drop models (issue 5): a whole frame of each look at 1920x1080, chosen by the same --set
+// lines an operator would write. Grid at 10 and 1000 drops/s (the goal: at most 10% more), analytic at
+// 100 and 500 sources. Each run restores the default look, so the benchmarks above stay comparable.
+struct Look {
+    const char* name;
+    std::vector<std::string> sets;
+};
+const std::vector<Look>& looks() {
+    static const std::vector<Look> all{
+        {"puddle_pulse", {}},
+        {"puddle_grid_10", {"drops.model=grid", "grid.drops_per_second=10"}},
+        {"puddle_grid_1000", {"drops.model=grid", "grid.drops_per_second=1000"}},
+        {"puddle_analytic_100", {"drops.model=analytic", "analytic.sources=100"}},
+        {"puddle_analytic_500", {"drops.model=analytic", "analytic.sources=500"}},
+        {"ocean", {"scene.kind=ocean"}},
+        {"street", {"scene.kind=street"}},
+        {"street_rain", {"scene.kind=street", "overlay.rain=true"}},
+    };
+    return all;
+}
+constexpr glm::ivec2 look_size{1920, 1080};
+
+void apply(Params& params, const std::vector<std::string>& sets) {
+    for (const std::string& s : sets)
+        if (auto a = params::parse_assignment(s)) params.set(a->id, a->value, params::ParamSource::CommandLine);
+}
+
+void restore_default_look(Params& params) {
+    const Params defaults;
+    for (ParamId id : {ParamId::scene_kind, ParamId::drops_model, ParamId::overlay_rain, ParamId::grid_drops_per_second,
+                       ParamId::analytic_sources})
+        params.set(id, defaults.at(id), params::ParamSource::CommandLine);
+}
+
+void bench_look(benchmark::State& state, const Look& look) {
+    Bench* b = bench_for(look_size, state);
+    if (!b) return;
+    apply(b->engine->params(), look.sets);
+    std::string error;
+    measure(state, b->engine->device(), [&] {
+        if (auto r = b->engine->frame(1.0 / 60.0); !r) error = r.error().message;
+    });
+    restore_default_look(b->engine->params());
+    if (!error.empty()) state.SkipWithError(error.c_str());
+}
+
+// The surface pass alone, where the drop models differ (the frame adds the same puddle render to each).
+void bench_drop_pass(benchmark::State& state, const Look& look) {
+    Bench* b = bench_for(look_size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    Params& params = w.resource<Params>();
+    apply(params, look.sets);
+    auto& clock = w.resource<systems::FrameClock>();
+    auto& surface = w.resource<systems::Surface>();
+    measure(state, device, [&] {
+        systems::analytic_ripple_system(device, params, clock, w.resource<systems::AnalyticRipples>(), surface);
+        systems::grid_drop_system(device, params, clock, w.resource<systems::GridDrops>(), surface);
+    });
+    restore_default_look(params);
+}
+
 // Passes everything to the display reporter that the usual flags chose, and keeps ms per benchmark
 // (by registered name; the mean over repetitions) for the summary.
 class Collector : public benchmark::BenchmarkReporter {
@@ -376,7 +444,19 @@ void print_summary(const Collector& c) {
             std::printf("%s", (rm && in ? fmt::format("{:>19.2f}x", *rm / *in) : fmt::format("{:>20}", "-")).c_str());
         }
     }
-    std::printf("\n");
+    std::printf("\n\nLooks at %s, ms per frame (x puddle_pulse); drop passes, ms\n", size_name(look_size).c_str());
+    const auto pulse = c.ms("look/puddle_pulse");
+    for (const Look& look : looks()) {
+        std::printf("%-20s%s", look.name, cell(c.ms(fmt::format("look/{}", look.name)), pulse).c_str());
+        if (look.sets.size() > 1 && look.sets[0].starts_with("drops."))
+            std::printf("%s", cell(c.ms(fmt::format("drop_pass/{}", look.name)), std::nullopt).c_str());
+        std::printf("\n");
+    }
+    for (const auto& [more, fewer] : {std::pair{"puddle_grid_1000", "puddle_grid_10"},
+                                      std::pair{"puddle_analytic_500", "puddle_analytic_100"}}) {
+        const auto a = c.ms(fmt::format("drop_pass/{}", more)), b = c.ms(fmt::format("drop_pass/{}", fewer));
+        if (a && b) std::printf("%-20s%19.2fx  (drop pass, %s / %s)\n", "ratio", *a / *b, more, fewer);
+    }
     print_camera_summary(c);
 }
 
@@ -408,6 +488,15 @@ void register_all() {
             add(fmt::format("render/{}/{}", m, n), [s, m](benchmark::State& st) { bench_render(st, s, m); });
         for (const char* m : methods)
             add(fmt::format("frame/{}/{}", m, n), [s, m](benchmark::State& st) { bench_frame(st, s, m); });
+    }
+    // Start-up cost of the procedural night sky (CPU), which a board pays once.
+    add("startup/night_sky_cubemap/256", [](benchmark::State& st) {
+        for (auto _ : st) benchmark::DoNotOptimize(assets::night_sky_cubemap(256, 1));
+    });
+    for (const Look& look : looks()) {
+        add(fmt::format("look/{}", look.name), [&look](benchmark::State& st) { bench_look(st, look); });
+        if (look.sets.size() > 1 && look.sets[0].starts_with("drops."))
+            add(fmt::format("drop_pass/{}", look.name), [&look](benchmark::State& st) { bench_drop_pass(st, look); });
     }
 }
 

@@ -117,6 +117,7 @@ Result<Pipeline> Device::create_pipeline(const PipelineDesc& desc) {
     if (auto r = compile(fs.id, desc.fragment, desc); !r) return r.error();
     Pipeline p;
     p.label_ = desc.label;
+    p.blend_ = desc.blend;
     p.program_ = GlHandle<detail::delete_program>(glCreateProgram());
     const GLuint prog = p.program_.get();
     glAttachShader(prog, vs.id);

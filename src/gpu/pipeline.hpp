@@ -11,6 +11,10 @@
 
 namespace puddle::gpu {
 
+// How the pass's output meets what the target holds: replace it, or blend by the output's alpha
+// (overlays drawn over a finished frame).
+enum class Blend { Replace, Alpha };
+
 struct PipelineDesc {
     std::string label;
     std::string vertex = "fullscreen.vert";  // file in shaders_gles/
@@ -18,6 +22,7 @@ struct PipelineDesc {
     std::vector<std::string> defines;         // variants: "METHOD_RAYMARCH", "MAX_DROPS 128"
     std::vector<std::string> textures;        // sampler uniform names; texture unit = position here
     std::vector<std::string> uniform_blocks;  // uniform block names; binding = position here
+    Blend blend = Blend::Replace;
 };
 
 namespace detail {
@@ -32,6 +37,7 @@ public:
     // Location of an active uniform, or -1 when the shader does not use it (setting it is then a no-op).
     GLint location(std::string_view uniform) const;
     std::span<const std::string> uniform_names() const { return names_; }
+    Blend blend() const { return blend_; }
 
 private:
     friend class Device;
@@ -39,6 +45,7 @@ private:
     std::string label_;
     std::vector<std::string> names_;
     std::vector<GLint> locations_;
+    Blend blend_ = Blend::Replace;
 };
 
 }  // namespace puddle::gpu

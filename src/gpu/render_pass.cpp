@@ -31,6 +31,12 @@ RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
 RenderPass& RenderPass::set_pipeline(const Pipeline& pipeline) {
     pipeline_ = &pipeline;
     glUseProgram(pipeline.id());
+    if (pipeline.blend() == Blend::Alpha) {
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep the target's alpha
+    } else {
+        glDisable(GL_BLEND);
+    }
     return *this;
 }
 
@@ -60,6 +66,10 @@ RenderPass& RenderPass::set(std::string_view name, int v) {
 }
 RenderPass& RenderPass::set(std::string_view name, glm::vec2 v) {
     glUniform2fv(pipeline_->location(name), 1, glm::value_ptr(v));
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, glm::ivec2 v) {
+    glUniform2iv(pipeline_->location(name), 1, glm::value_ptr(v));
     return *this;
 }
 RenderPass& RenderPass::set(std::string_view name, glm::vec3 v) {

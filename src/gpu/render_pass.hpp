@@ -46,6 +46,7 @@ public:
     RenderPass& set(std::string_view name, float v);
     RenderPass& set(std::string_view name, int v);
     RenderPass& set(std::string_view name, glm::vec2 v);
+    RenderPass& set(std::string_view name, glm::ivec2 v);
     RenderPass& set(std::string_view name, glm::vec3 v);
     RenderPass& set(std::string_view name, glm::vec4 v);
     RenderPass& set(std::string_view name, const glm::mat3& v);

@@ -1,6 +1,7 @@
 #include "platform/egl_context.hpp"
 
 #include <cstring>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,12 @@ const EglExtensions& egl_extensions() {
         return t;
     }();
     return table;
+}
+
+// How many EglContexts use each initialised display.
+std::map<EGLDisplay, int>& display_users() {
+    static std::map<EGLDisplay, int> users;
+    return users;
 }
 
 const char* platform_name(EGLenum platform) {
@@ -77,6 +84,7 @@ Result<EglContext> EglContext::create(const EglRequest& request) {
         ctx.display_ = EGL_NO_DISPLAY;  // nothing to terminate
         return make_error(ExitCode::Display, "egl: {}: eglInitialize: {}", pname, egl_error_name(eglGetError()));
     }
+    ++display_users()[ctx.display_];
     if (const char* ext = eglQueryString(ctx.display_, EGL_EXTENSIONS)) ctx.extensions_ = ext;
     if (!eglBindAPI(EGL_OPENGL_ES_API))
         return make_error(ExitCode::Display, "egl: {}: eglBindAPI(GLES): {}", pname, egl_error_name(eglGetError()));
@@ -131,7 +139,12 @@ void EglContext::release() {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+    // One EGLDisplay is shared by every context on the same platform in this process (an engine in a
+    // test beside another, a benchmark's engines): terminate it only when the last user goes.
+    if (--display_users()[display_] == 0) {
+        display_users().erase(display_);
+        eglTerminate(display_);
+    }
     display_ = EGL_NO_DISPLAY;
     surface_ = EGL_NO_SURFACE;
     context_ = EGL_NO_CONTEXT;

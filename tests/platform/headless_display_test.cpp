@@ -1,6 +1,10 @@
 // The headless backend: surfaceless EGL, an offscreen target of the requested size.
 #include <gtest/gtest.h>
 
+#include "support/test_support.hpp"
+
+#include "support/gpu_fixture.hpp"
+
 #include "gpu/device.hpp"
 #include "platform/display.hpp"
 
@@ -25,6 +29,20 @@ TEST(HeadlessDisplay, DefaultSizeIs640x360) {
     auto d = create_headless_display({.backend = BackendKind::Headless});
     ASSERT_TRUE(d.ok()) << d.error().message;
     EXPECT_EQ((*d)->size(), glm::ivec2(640, 360));
+}
+
+// Engines share one EGLDisplay per process; ending one must not terminate the display under another.
+TEST(HeadlessDisplay, EndingOneEngineLeavesAnotherWorking) {
+    const params::Params params;
+    auto survivor = test::make_engine(params, {96, 54});
+    ASSERT_TRUE(survivor);
+    { auto other = test::make_engine(params, {96, 54}); ASSERT_TRUE(other); }
+    const assets::Image after = test::render_frames(*survivor, 20);
+    auto fresh = test::make_engine(params, {96, 54});
+    ASSERT_TRUE(fresh);
+    const assets::Image expected = test::render_frames(*fresh, 20);
+    EXPECT_LE(test::compare_images(after, expected, 0).max_channel_diff, 1);
+    EXPECT_GT(test::luma_stddev(after, 0, 0, 96, 54), 3.0) << "a picture, not a flat fill";
 }
 
 }  // namespace

@@ -67,5 +67,28 @@ TEST(Golden, HdrCityLightsInTheRain) {
                                                 90, golden_size));
 }
 
+// Scenes and drop models (issue 5), smaller: one picture each, also shown in the README. None of them
+// needs the wave field to settle (they are functions of time), so a few frames suffice.
+constexpr glm::ivec2 scene_golden_size{320, 180};
+
+// The reference's camera (0, 5, 5) looks down at the water; the second looks out to the horizon.
+TEST(Golden, OceanScene) { check_golden("ocean", render_with({"scene.kind=ocean"}, 4, scene_golden_size)); }
+
+TEST(Golden, OceanSceneToTheHorizon) {
+    check_golden("ocean_horizon", render_with({"scene.kind=ocean", "ocean.camera_position=0,4,5",
+                                               "ocean.camera_target=0,3,-10"},
+                                              4, scene_golden_size));
+}
+
+TEST(Golden, RainyStreetWithRainOverlay) {
+    check_golden("street", render_with({"scene.kind=street", "overlay.rain=true"}, 4, scene_golden_size));
+}
+
+TEST(Golden, PuddleAnalyticRipples) {
+    check_golden("analytic", render_with({"drops.model=analytic"}, 4, scene_golden_size));
+}
+
+TEST(Golden, PuddleGridDrops) { check_golden("grid", render_with({"drops.model=grid"}, 4, scene_golden_size)); }
+
 }  // namespace
 }  // namespace puddle::test

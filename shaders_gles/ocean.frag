@@ -1,0 +1,109 @@
+#version 300 es
+// Open water (REFERENCE.md section 2): the height is an fBm of choppy wave octaves, each travelling in
+// two directions and rotated 45 degrees from the last; the view ray marches that height field; the hit is
+// lit by a sun, a warm back light and the sky dome, with a Fresnel reflection of the sky.
+precision highp float;
+precision highp int;
+
+#include "hash.glsl"
+
+in vec2 v_uv;
+out vec4 o_color;
+
+uniform float u_time;          // seconds, wrapped on the CPU to keep float precision
+uniform vec3 u_cam_forward;
+uniform vec3 u_cam_right;
+uniform vec3 u_cam_up;
+uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1)
+
+uniform vec3 u_ocean_camera_position;
+uniform vec3 u_ocean_sea_color;
+uniform float u_ocean_choppiness;
+uniform float u_ocean_speed;
+uniform int u_ocean_octaves;
+uniform float u_ocean_height;
+
+const int MAX_OCTAVES = 8;
+const int MARCH_STEPS = 200;
+const float MARCH_EPSILON = 1e-4;
+const float NORMAL_EPSILON = 1e-3;
+const float FAR = 400.0;
+const vec3 SUN = vec3(0.57735027);  // normalize(1, 1, 1)
+const vec3 BACK_LIGHT = vec3(0.52, 0.42, 0.34);
+const mat2 OCTAVE_ROTATION = mat2(0.70710678, 0.70710678, -0.70710678, 0.70710678);  // 45 degrees
+
+// One choppy octave: offset by noise of itself, then sharpen the crests by the choppiness power.
+float choppy_wave(vec2 uv, float choppy) {
+    uv += value_noise(uv, 7u) * 2.0 - 1.0;
+    vec2 a = 1.0 - abs(sin(uv));
+    vec2 b = abs(cos(uv));
+    vec2 s = mix(a, b, a);
+    return pow(1.0 - sqrt(s.x * s.y), choppy);
+}
+
+float sea_height(vec2 p, int octaves) {
+    float t = u_time * u_ocean_speed;
+    float frequency = 0.16;
+    float amplitude = u_ocean_height;
+    float choppy = u_ocean_choppiness;
+    vec2 uv = p;
+    float h = 0.0;
+    for (int i = 0; i < MAX_OCTAVES; ++i) {
+        if (i >= octaves) break;
+        float d = choppy_wave((uv + t) * frequency, choppy) + choppy_wave((uv - 0.8 * t) * frequency, choppy);
+        h += d * amplitude;
+        uv = OCTAVE_ROTATION * uv + vec2(100.0, 0.0);
+        frequency *= 2.0;
+        amplitude *= 0.22;
+        choppy = mix(choppy, 1.0, 0.2);
+    }
+    return h;
+}
+
+vec3 sky(vec3 dir) { return mix(vec3(0.58, 0.77, 1.0), vec3(1.0), clamp(1.5 * dir.y, 0.0, 1.0)); }
+
+vec3 sea_normal(vec3 p) {
+    float h = sea_height(p.xz, u_ocean_octaves);
+    float hx = sea_height(p.xz + vec2(NORMAL_EPSILON, 0.0), u_ocean_octaves);
+    float hz = sea_height(p.xz + vec2(0.0, NORMAL_EPSILON), u_ocean_octaves);
+    return normalize(vec3(h - hx, NORMAL_EPSILON, h - hz));
+}
+
+// Marches p.y - height(p.xz) along the ray; returns the distance, or -1 for a ray that meets no water.
+float march(vec3 origin, vec3 dir) {
+    float t = 0.0;
+    for (int i = 0; i < MARCH_STEPS; ++i) {
+        vec3 p = origin + dir * t;
+        float gap = p.y - sea_height(p.xz, u_ocean_octaves);
+        if (gap < MARCH_EPSILON) return t;
+        t += clamp(gap, 0.01, 2.0);
+        if (t > FAR) break;
+    }
+    return -1.0;
+}
+
+vec3 sea_color(vec3 p, vec3 n, vec3 view) {
+    float diffuse = max(dot(n, SUN), 0.0) * 1.2;
+    float back = max(dot(n, normalize(vec3(-SUN.x, 0.0, -SUN.z))), 0.0);
+    float dome = (0.2 + 0.8 * n.y) * 0.1;
+    vec3 body = u_ocean_sea_color * (diffuse + dome) + u_ocean_sea_color * BACK_LIGHT * back;
+    // Fresnel-Schlick, IOR 1.333 as in section 1.
+    float f0 = 0.02;
+    float fresnel = f0 + (1.0 - f0) * pow(1.0 - abs(dot(n, -view)), 5.0);
+    return mix(body, sky(reflect(view, n)), fresnel);
+}
+
+void main() {
+    vec2 ndc = v_uv * 2.0 - 1.0;
+    vec3 dir = normalize(u_cam_forward + ndc.x * u_cam_scale.x * u_cam_right + ndc.y * u_cam_scale.y * u_cam_up);
+    vec3 origin = u_ocean_camera_position;
+    vec3 color = sky(dir);
+    float t = dir.y < 0.0 ? march(origin, dir) : -1.0;
+    if (t > 0.0) {
+        vec3 p = origin + dir * t;
+        vec3 water = sea_color(p, sea_normal(p), dir);
+        // Far water fades into the sky: crests smaller than a pixel would only shimmer.
+        color = mix(water, color, smoothstep(0.3 * FAR, FAR, t));
+    }
+    o_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+}

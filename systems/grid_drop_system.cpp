@@ -1,0 +1,58 @@
+#include "systems/grid_drop_system.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "systems/param_uniforms.hpp"
+#include "systems/scene_select.hpp"
+
+namespace puddle::systems {
+
+using params::ParamId;
+
+float grid_cell_texels(const params::Params& params, int field_resolution) {
+    const double cells = std::max(1.0, static_cast<double>(params.f(ParamId::grid_drops_per_second)) *
+                                           static_cast<double>(params.f(ParamId::grid_cycle)));
+    return static_cast<float>(field_resolution / std::sqrt(cells));
+}
+
+Result<void> prepare_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid, int reach) {
+    return grid.pass.ensure(device, [&] {
+        std::vector<std::string> defines{fmt::format("GRID_REACH {}", reach)};
+        if (surface.unorm) defines.emplace_back("SURFACE_UNORM");
+        return gpu::PipelineDesc{.label = "grid drops", .fragment = "grid_drops.frag", .defines = defines};
+    });
+}
+
+void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
+                    Surface& surface, glm::ivec2 only_cell) {
+    // Cycle count and fraction split in double: a float time would lose the fraction after weeks.
+    const double cycles = now / static_cast<double>(params.f(ParamId::grid_cycle));
+    const double base = std::floor(cycles);
+    auto pass = device.begin_pass({.label = "grid drops",
+                                   .target = {&surface.texture, {surface.resolution, surface.resolution}},
+                                   .load = gpu::LoadOp::DontCare});
+    pass.set_pipeline(grid.pass.pipeline);
+    set_param_uniforms(pass, params);
+    pass.set("u_cell_texels", grid_cell_texels(params, surface.resolution))
+        .set("u_cycle_base", static_cast<int>(std::fmod(base, 2147483648.0)))
+        .set("u_cycle_fraction", static_cast<float>(cycles - base))
+        .set("u_seed", params.i(ParamId::rain_seed))
+        .set("u_only_cell", only_cell);
+    pass.draw_fullscreen();
+}
+
+void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                      GridDrops& grid, Surface& surface) {
+    if (selected_scene(params) != Scene::Puddle || selected_drop_model(params) != DropModel::Grid) return;
+    const bool failed_before = grid.pass.failed;
+    if (auto r = prepare_grid_drops(device, surface, grid); !r) {
+        if (!failed_before) spdlog::error("{}", r.error().message);  // one line, then draw nothing
+        return;
+    }
+    grid_drop_pass(device, params, clock.sim_time, grid, surface);
+}
+
+}  // namespace puddle::systems

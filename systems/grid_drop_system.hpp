@@ -1,0 +1,35 @@
+#pragma once
+// Grid-sampled drops (REFERENCE.md section 5), the puddle's drops when drops.model = grid: the field is
+// cut into square cells with one drop each, and every texel looks at its 3x3 cells only, so a frame
+// costs the same at 10 or 1000 drops per second (grid_drops.frag writes the puddle's surface texture).
+//
+// grid.drops_per_second * grid.cycle drops are alive at once, one per cell, so that is the cell count.
+
+#include "gpu/device.hpp"
+#include "params/param_store.hpp"
+#include "systems/frame_clock.hpp"
+#include "systems/lazy_pipeline.hpp"
+#include "systems/surface_system.hpp"
+
+namespace puddle::systems {
+
+// Resource.
+struct GridDrops {
+    LazyPipeline pass;
+};
+
+// Cell edge in field texels for the current parameters.
+float grid_cell_texels(const params::Params& params, int field_resolution);
+
+// reach 1 is the technique (3x3 cells); tests build reach 2 (5x5) to show nothing is lost outside 3x3.
+Result<void> prepare_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid, int reach = 1);
+
+// Writes the surface for simulated time `now`; only_cell >= 0 isolates one cell's drop (tests).
+void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
+                    Surface& surface, glm::ivec2 only_cell = {-1, -1});
+
+// Render stage, before the puddle pass: when the scene is the puddle and drops.model = grid.
+void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                      GridDrops& grid, Surface& surface);
+
+}  // namespace puddle::systems
