@@ -4,6 +4,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "systems/camera_environment.hpp"
+#include "systems/camera_system.hpp"
 #include "systems/analytic_ripple_system.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/environment_system.hpp"
@@ -83,6 +85,8 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     auto& ground = world.insert_resource<Ground>();
     if (auto r = load_ground(device, params, ground); !r) return r;
     spdlog::info("ground: {}", ground.source);
+    world.insert_resource<CameraEnvironment>();
+    if (auto r = open_camera_feed(world.insert_resource<CameraFeed>(), params); !r) return r;
 
     world.insert_resource<FrameClock>();
     world.insert_resource<DropSlots>();
@@ -107,6 +111,10 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     });
     schedule.add_system(ecs::Stage::Input, "wave rebuild", wave_rebuild_system);
     schedule.add_system(ecs::Stage::Input, "environment reload", environment_reload_system);
+    schedule.add_system(ecs::Stage::Input, "camera feed", [](ecs::World& w) {
+        camera_feed_system(w.resource<CameraFeed>(), w.resource<Params>(), w.resource<FrameClock>(),
+                           w.resource<gpu::Device>(), w.resource<CameraEnvironment>());
+    });
 
     schedule.add_system(ecs::Stage::Simulate, "begin step",
                         [](ecs::World& w) { begin_step_system(w.resource<FrameClock>()); });
@@ -125,6 +133,10 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
         if (!wave_field_in_use(w.resource<Params>())) return;
         surface_system(w.resource<gpu::Device>(), w.resource<WaveField>(), w.resource<Surface>());
     });
+    schedule.add_system(ecs::Stage::Render, "camera environment", [](ecs::World& w) {
+        camera_environment_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Environment>(),
+                                  w.resource<CameraEnvironment>());
+    });
     schedule.add_system(ecs::Stage::Render, "analytic ripples", [](ecs::World& w) {
         analytic_ripple_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
                                w.resource<AnalyticRipples>(), w.resource<Surface>());
@@ -137,7 +149,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
         if (selected_scene(w.resource<Params>()) != Scene::Puddle) return;
         render_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Surface>(),
                       w.resource<Environment>(), w.resource<Ground>(), w.resource<PuddleRenderer>(),
-                      w.resource<RenderTarget>());
+                      w.resource<RenderTarget>(), w.resource<CameraEnvironment>().reflection());
     });
     schedule.add_system(ecs::Stage::Render, "ocean", [](ecs::World& w) {
         ocean_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),

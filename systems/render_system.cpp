@@ -33,7 +33,7 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
 
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
                    const Environment& env, const Ground& ground, const PuddleRenderer& renderer,
-                   const RenderTarget& target) {
+                   const RenderTarget& target, const gpu::Texture* environment_override) {
     const gpu::FrameTarget& frame = target.target;
     const bool raymarch = params.s(ParamId::render_method) == "raymarch";
 
@@ -53,7 +53,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     auto pass = device.begin_pass({.label = "puddle", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(raymarch ? renderer.raymarch : renderer.intersect)
         .set_texture(0, surface.texture, surface.sampler)
-        .set_texture(1, env.cube, env.sampler)
+        .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
     set_param_uniforms(pass, params);
     pass.set("u_cam_forward", forward)
@@ -61,7 +61,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_up", up)
         .set("u_cam_scale", glm::vec2(tan_half * aspect, tan_half))
         .set("u_env_matrix", env_matrix)
-        .set("u_env_rgbm", env.rgbm ? 1 : 0)
+        .set("u_env_rgbm", env.rgbm && !environment_override ? 1 : 0)  // the camera cube is sRGB8
         .set("u_env_scale", std::exp2(params.f(ParamId::environment_exposure)));
     pass.draw_fullscreen();
 }

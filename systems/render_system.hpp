@@ -1,5 +1,6 @@
 #pragma once
 // The puddle render pass: draws the scene for the camera into the frame target (REFERENCE.md §1).
+// environment_override: a cube sampled in place of env.cube (the camera environment while it streams).
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -24,6 +25,6 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
 
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
                    const Environment& env, const Ground& ground, const PuddleRenderer& renderer,
-                   const RenderTarget& target);
+                   const RenderTarget& target, const gpu::Texture* environment_override = nullptr);
 
 }  // namespace puddle::systems

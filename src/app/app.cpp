@@ -47,6 +47,13 @@ std::string config_path(const CliOptions& o) {
 Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
     std::vector<params::ConfigEntry> command_line;
     if (o.seed) command_line.push_back({params::ParamId::rain_seed, *o.seed, 0});
+    if (!o.camera.empty()) {  // shorthand for the two --set lines it stands for; a --set still wins
+        for (const std::string& s : {std::string("environment.source=camera"), "environment.camera_device=" + o.camera}) {
+            auto entry = params::parse_assignment(s);
+            if (!entry) return entry.error();
+            command_line.push_back(std::move(*entry));
+        }
+    }
     for (const std::string& s : o.sets) {
         auto entry = params::parse_assignment(s);
         if (!entry) return entry.error();

@@ -14,6 +14,7 @@
 // without it a pass would look as cheap as its API calls.
 
 #include <benchmark/benchmark.h>
+#include <jpeglib.h>
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -28,6 +29,8 @@
 #include <fmt/format.h>
 
 #include "app/engine.hpp"
+#include "camera/mjpeg_decoder.hpp"
+#include "systems/camera_environment.hpp"
 #include "assets/procedural.hpp"
 #include "params/config_loader.hpp"
 #include "systems/analytic_ripple_system.hpp"
@@ -89,8 +92,11 @@ Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
 
 // The engine of `size`, made on first use. Benchmarks are registered size by size, so each size is
 // built once; the old engine goes first so only one EGL context exists at a time.
+void release_camera_bench();  // its GPU objects belong to the current engine's context
+
 Bench* bench_for(glm::ivec2 size, benchmark::State& state) {
     if (current && current->size == size) return current.get();
+    release_camera_bench();
     current.reset();
     auto b = make_bench(size);
     if (!b) {
@@ -179,6 +185,128 @@ void bench_frame(benchmark::State& state, glm::ivec2 size, const char* method) {
     });
     if (!error.empty()) state.SkipWithError(error.c_str());
 }
+
+// --- camera frames (issue 4): what one 1280x720 camera frame costs -------------------------------------
+// cpu: the copy (glTexSubImage2D of a YUYV frame, padded rows as drivers give them) or the MJPEG decode;
+// gpu: the YUV conversion pass plus the six small environment cube faces and their mipmaps. The
+// zero-copy path needs a dmabuf exporter; where EGL has no dmabuf import (llvmpipe), the external
+// sampler is measured over an EGLImage of a GL texture, which is its sampling cost without the import.
+constexpr glm::ivec2 camera_size{1280, 720};
+
+struct CameraBench {
+    systems::CameraEnvironment env;
+    std::vector<std::byte> yuyv;
+    camera::CameraImage image;
+};
+
+std::unique_ptr<CameraBench> camera_current;  // lives with `current`, released before it
+
+void release_camera_bench() { camera_current.reset(); }
+
+CameraBench* camera_bench(benchmark::State& state) {
+    Bench* b = bench_for(sizes[0], state);
+    if (!b) return nullptr;
+    if (camera_current) return camera_current.get();
+    camera_current = std::make_unique<CameraBench>();
+    CameraBench* cb = camera_current.get();
+    if (auto r = systems::build_camera_pipelines(b->engine->device(), cb->env); !r) {
+        state.SkipWithError(r.error().message.c_str());
+        return nullptr;
+    }
+    const int stride = camera_size.x * 2 + 64;
+    cb->yuyv.assign(static_cast<std::size_t>(stride) * camera_size.y, std::byte{128});
+    for (std::size_t i = 0; i < cb->yuyv.size(); i += 7) cb->yuyv[i] = std::byte(i & 0xff);
+    cb->image = {.layout = camera::PixelLayout::Yuyv, .width = camera_size.x, .height = camera_size.y,
+                 .stride = stride, .data = cb->yuyv, .matrix = camera::YuvMatrix::Bt709};
+    return cb;
+}
+
+void bench_camera_copy(benchmark::State& state) {
+    CameraBench* cb = camera_bench(state);
+    if (!cb) return;
+    gpu::Device& device = current->engine->device();
+    measure(state, device, [&] { (void)systems::upload_camera_frame(device, cb->image, cb->env); });
+}
+
+void bench_camera_gpu(benchmark::State& state) {
+    CameraBench* cb = camera_bench(state);
+    if (!cb) return;
+    ecs::World& w = current->engine->world();
+    gpu::Device& device = current->engine->device();
+    (void)systems::upload_camera_frame(device, cb->image, cb->env);
+    measure(state, device, [&] {
+        cb->env.convert_due = true;  // as after each new frame
+        systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(), cb->env);
+    });
+}
+
+void bench_camera_external(benchmark::State& state) {
+    CameraBench* cb = camera_bench(state);
+    if (!cb) return;
+    if (!cb->env.support.texture_images) {
+        state.SkipWithError("no EGL_KHR_gl_texture_2D_image / external sampler here");
+        return;
+    }
+    ecs::World& w = current->engine->world();
+    gpu::Device& device = current->engine->device();
+    gpu::Texture source = device.create_texture({.label = "bench camera frame", .width = camera_size.x, .height = camera_size.y});
+    source.upload(std::vector<std::byte>(static_cast<std::size_t>(camera_size.x) * camera_size.y * 4, std::byte{90}));
+    auto image = device.create_external_image({.label = "bench camera image", .source = &source});
+    if (!image) {
+        state.SkipWithError(image.error().message.c_str());
+        return;
+    }
+    (void)systems::upload_camera_frame(device, cb->image, cb->env);  // sizes the colour texture
+    measure(state, device, [&] {
+        cb->env.pending_import = &*image;
+        cb->env.convert_due = true;
+        systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(), cb->env);
+    });
+    cb->env.pending_import = nullptr;
+}
+
+void bench_camera_mjpeg(benchmark::State& state) {
+    // A 1280x720 JPEG made by encoding a converted frame would need an encoder here; libjpeg's own
+    // output of a mid-grey frame with fine stripes is a fair stand-in for a webcam's MJPEG.
+    static std::vector<std::byte> jpeg;
+    if (jpeg.empty()) {
+        jpeg_compress_struct info{};
+        jpeg_error_mgr errors{};
+        info.err = jpeg_std_error(&errors);
+        jpeg_create_compress(&info);
+        unsigned char* out = nullptr;
+        unsigned long size = 0;
+        jpeg_mem_dest(&info, &out, &size);
+        info.image_width = camera_size.x;
+        info.image_height = camera_size.y;
+        info.input_components = 3;
+        info.in_color_space = JCS_RGB;
+        jpeg_set_defaults(&info);
+        jpeg_set_quality(&info, 85, TRUE);
+        jpeg_start_compress(&info, TRUE);
+        std::vector<unsigned char> row(static_cast<std::size_t>(camera_size.x) * 3);
+        while (info.next_scanline < info.image_height) {
+            for (std::size_t i = 0; i < row.size(); ++i) row[i] = static_cast<unsigned char>((i * 7 + info.next_scanline * 3) & 0xff);
+            unsigned char* p = row.data();
+            jpeg_write_scanlines(&info, &p, 1);
+        }
+        jpeg_finish_compress(&info);
+        jpeg_destroy_compress(&info);
+        jpeg.assign(reinterpret_cast<std::byte*>(out), reinterpret_cast<std::byte*>(out) + size);
+        std::free(out);
+    }
+    camera::MjpegDecoder decoder;
+    for (auto _ : state) {
+        auto r = decoder.decode(jpeg, camera_size.x, camera_size.y);
+        if (!r) {
+            state.SkipWithError(r.error().message.c_str());
+            return;
+        }
+        benchmark::DoNotOptimize(decoder.rgba().data());
+    }
+}
+
+void print_camera_summary(const class Collector& c);
 
 // Scenes and drop models (issue 5): a whole frame of each look at 1920x1080, chosen by the same --set
 // lines an operator would write. Grid at 10 and 1000 drops/s (the goal: at most 10% more), analytic at
@@ -329,12 +457,26 @@ void print_summary(const Collector& c) {
         const auto a = c.ms(fmt::format("drop_pass/{}", more)), b = c.ms(fmt::format("drop_pass/{}", fewer));
         if (a && b) std::printf("%-20s%19.2fx  (drop pass, %s / %s)\n", "ratio", *a / *b, more, fewer);
     }
+    print_camera_summary(c);
+}
+
+void print_camera_summary(const Collector& c) {
+    std::printf("\nOne camera frame at %dx%d, ms\n", camera_size.x, camera_size.y);
+    for (const char* key : {"camera/cpu_copy_yuyv", "camera/cpu_decode_mjpeg", "camera/gpu_convert_and_cube",
+                            "camera/gpu_external_sampler"}) {
+        const auto ms = c.ms(key);
+        std::printf("%-30s%s\n", key, ms ? fmt::format("{:>10.2f}", *ms).c_str() : fmt::format("{:>10}", "-").c_str());
+    }
 }
 
 void register_all() {
     auto add = [](const std::string& name, auto fn) {
         benchmark::RegisterBenchmark(name.c_str(), fn)->UseRealTime()->Unit(benchmark::kMillisecond);
     };
+    add("camera/cpu_copy_yuyv", bench_camera_copy);
+    add("camera/cpu_decode_mjpeg", bench_camera_mjpeg);
+    add("camera/gpu_convert_and_cube", bench_camera_gpu);
+    add("camera/gpu_external_sampler", bench_camera_external);
     for (glm::ivec2 s : sizes) {
         const std::string n = size_name(s);
         add("floor/" + n, [s](benchmark::State& st) { bench_floor(st, s); });
@@ -375,6 +517,7 @@ int main(int argc, char** argv) {
     register_all();
     Collector collector(benchmark::CreateDefaultDisplayReporter());
     benchmark::RunSpecifiedBenchmarks(&collector);
+    release_camera_bench();
     current.reset();  // GPU objects and the EGL context go before static destruction and driver teardown
     if (!collector.empty()) print_summary(collector);  // nothing ran: --benchmark_list_tests, a filter
     benchmark::Shutdown();

@@ -25,6 +25,7 @@ struct CliOptions {
     double fps_cap = 0;               // 0: the display's pace (vblank), headless: as fast as possible
     bool fixed_step = false;          // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
     std::string log_level = "info";
+    std::string camera;               // --camera DEVICE|mock:PATH: environment.source = camera from that device
     std::string gpio = "gpiod";       // knob backend: gpiod, or mock:PATH (a script or FIFO of line changes)
     std::string state_path;           // knob state file; empty: $STATE_DIRECTORY, $XDG_STATE_HOME or ~/.local/state
 };

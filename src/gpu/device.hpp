@@ -10,6 +10,7 @@
 #include "gpu/buffer.hpp"
 #include "gpu/capabilities.hpp"
 #include "gpu/debug_labels.hpp"
+#include "gpu/external_image.hpp"
 #include "gpu/frame_target.hpp"
 #include "gpu/handle.hpp"
 #include "gpu/pipeline.hpp"
@@ -41,6 +42,8 @@ public:
     // Compile and link errors name the shader file and line: "gpu: wave_step.frag:31: error: ...".
     Result<Pipeline> create_pipeline(const PipelineDesc& desc);
     RenderPass begin_pass(const RenderPassDesc& desc);
+    // An EGLImage (from a dmabuf or a GL texture) as an External texture (external_image.cpp).
+    Result<ExternalImage> create_external_image(const ExternalImageDesc& desc);
 
     // Reads a frame into `rgba` (size.x * size.y * 4 bytes), top row first, as PNG files expect.
     void read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba);

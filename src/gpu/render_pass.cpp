@@ -42,7 +42,11 @@ RenderPass& RenderPass::set_pipeline(const Pipeline& pipeline) {
 
 RenderPass& RenderPass::set_texture(int unit, const Texture& texture, const Sampler& sampler) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(texture.desc().kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, texture.id());
+    const TextureKind kind = texture.desc().kind;
+    glBindTexture(kind == TextureKind::Cube       ? GL_TEXTURE_CUBE_MAP
+                  : kind == TextureKind::External ? GL_TEXTURE_EXTERNAL_OES
+                                                  : GL_TEXTURE_2D,
+                  texture.id());
     glBindSampler(static_cast<GLuint>(unit), sampler.id());
     return *this;
 }

@@ -20,6 +20,8 @@ GlFormat gl_format(TextureFormat f) {
         case TextureFormat::RG32I: return {GL_RG32I, GL_RG_INTEGER, GL_INT, 2, 4};
         case TextureFormat::RGBA16F: return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, 4};
         case TextureFormat::RGBA32F: return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, 4};
+        case TextureFormat::R8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1};
+        case TextureFormat::RG8: return {GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2, 1};
     }
     return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
 }
@@ -32,6 +34,8 @@ const char* format_name(TextureFormat f) {
         case TextureFormat::RG32I: return "RG32I";
         case TextureFormat::RGBA16F: return "RGBA16F";
         case TextureFormat::RGBA32F: return "RGBA32F";
+        case TextureFormat::R8: return "R8";
+        case TextureFormat::RG8: return "RG8";
     }
     return "?";
 }
@@ -50,6 +54,19 @@ void Texture::upload(std::span<const std::byte> data, int level, int face) {
         glBindTexture(GL_TEXTURE_2D, id());
         glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, f.format, f.type, data.data());
     }
+}
+
+void Texture::upload_rows(std::span<const std::byte> data, int row_bytes) {
+    const GlFormat f = gl_format(desc_.format);
+    const int texel = f.channels * f.bytes_per_channel;
+    assert(desc_.kind == TextureKind::D2 && row_bytes % texel == 0);
+    assert(data.size() >= std::size_t(row_bytes) * (desc_.height - 1) + std::size_t(desc_.width) * texel);
+    (void)data;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, row_bytes / texel);
+    glBindTexture(GL_TEXTURE_2D, id());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, desc_.width, desc_.height, f.format, f.type, data.data());
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
 }
 
 void Texture::generate_mipmaps() {

@@ -17,8 +17,11 @@ enum class TextureFormat {
     RG32I,     // wave field, fixed point, where float targets are missing
     RGBA16F,   // filterable float: surface (height + normal), HDR colour
     RGBA32F,
+    R8,        // one 8-bit channel: a camera's Y plane
+    RG8,       // two 8-bit channels: a camera's interleaved UV plane
 };
-enum class TextureKind { D2, Cube };
+// External: a GL_TEXTURE_EXTERNAL_OES over an EGLImage (camera dmabufs), made by create_external_image.
+enum class TextureKind { D2, Cube, External };
 
 struct TextureDesc {
     std::string label;
@@ -48,12 +51,15 @@ public:
     // (RGBA16F also takes RGBA floats); RG32I ints. Rows bottom-up in GL terms = top-first image rows
     // for cube faces (GL's cube convention), first row at t=0 for 2D.
     void upload(std::span<const std::byte> data, int level = 0, int face = 0);
+    // Level 0 of a 2D texture from rows `row_bytes` apart (a driver's bytesperline, often padded).
+    void upload_rows(std::span<const std::byte> data, int row_bytes);
     void generate_mipmaps();
     // The framebuffer that renders into a level (of one face for cube maps), made on first use.
     GLuint framebuffer(int face = 0, int level = 0) const;
 
 private:
     friend class Device;
+    friend class ExternalImage;
     TextureDesc desc_;
     GlHandle<detail::delete_texture> id_;
     mutable std::array<GlHandle<detail::delete_framebuffer>, 6> fbos_;  // one per cube face

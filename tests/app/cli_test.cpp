@@ -96,6 +96,12 @@ TEST(Cli, SetValuesAreNotCheckedHere) {
     EXPECT_EQ(parse_ok({"--set", "no.such=1"}).sets, (std::vector<std::string>{"no.such=1"}));
 }
 
+TEST(Cli, CameraTakesADeviceOrAMockSource) {
+    EXPECT_EQ(parse_ok({"--camera", "/dev/video2"}).camera, "/dev/video2");
+    EXPECT_EQ(parse_ok({"--camera", "mock:/tmp/room.png"}).camera, "mock:/tmp/room.png");
+    EXPECT_EQ(parse_ok({}).camera, "");
+}
+
 TEST(Cli, Frames) {
     EXPECT_EQ(parse_ok({"--frames", "300"}).frames, 300L);
     EXPECT_EQ(parse_ok({"-n", "1"}).frames, 1L);

@@ -1,0 +1,35 @@
+#pragma once
+// Where camera frames come from: a small interface with one implementation per file (a V4L2 device,
+// a mock that plays images), chosen by the device string: "mock:PATH" or a device path.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "camera/camera_image.hpp"
+#include "camera/v4l2_capture.hpp"
+#include "camera/v4l2_io.hpp"
+#include "util/result.hpp"
+
+namespace puddle::camera {
+
+class CameraSource {
+public:
+    virtual ~CameraSource() = default;
+    // Never blocks. `now` is the frame loop's time in seconds (the mock paces itself by it). Returns the
+    // newest frame since the last call (valid until the next call), nothing when none is new, or an
+    // error when the source is gone (the caller drops it and retries later).
+    virtual Result<std::optional<CameraImage>> poll(double now) = 0;
+    // One line for the log: device, format, size.
+    virtual std::string describe() const = 0;
+};
+
+// V4L2 streaming through `io` (MJPEG decoded here; YUYV and NV12 passed on for the GPU to convert).
+Result<std::unique_ptr<CameraSource>> open_v4l2_source(V4l2Io& io, const CaptureRequest& request);
+// "mock:PATH": an image, or a folder of images played in a loop at `fps` (name order). Errors exit 3.
+Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps);
+
+// request.device "mock:PATH" opens the mock, anything else a V4L2 device through io.
+Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request);
+
+}  // namespace puddle::camera

@@ -1,0 +1,34 @@
+#pragma once
+// Which pixel format and size to ask a V4L2 device for: what it offers (VIDIOC_ENUM_FMT and
+// VIDIOC_ENUM_FRAMESIZES), the config's preference, and a message listing the offer when nothing fits.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "camera/v4l2_io.hpp"
+
+namespace puddle::camera {
+
+// environment.camera_format: auto tries NV12, YUYV, then MJPEG (the YUV formats cost no CPU decode).
+enum class FormatPreference { Auto, Yuyv, Nv12, Mjpeg };
+FormatPreference parse_format_preference(std::string_view name);
+
+struct OfferedFormat {
+    std::uint32_t fourcc = 0;
+    std::vector<std::string> sizes;  // "1280x720", or "160x120 to 1920x1080" for stepwise ranges
+};
+
+// "YUYV", "MJPG", "H264": the four characters of a V4L2 pixel format.
+std::string fourcc_name(std::uint32_t fourcc);
+// Everything the device at fd offers; empty when it enumerates nothing.
+std::vector<OfferedFormat> enumerate_formats(V4l2Io& io, int fd);
+// The first offered format the preference accepts, or nothing.
+std::optional<std::uint32_t> choose_format(const std::vector<OfferedFormat>& offered,
+                                           FormatPreference preference);
+// "YUYV 640x480, 1280x720; H264 1920x1080", or "nothing" for an empty list.
+std::string describe_offer(const std::vector<OfferedFormat>& offered);
+
+}  // namespace puddle::camera

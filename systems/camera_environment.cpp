@@ -1,0 +1,241 @@
+#include "systems/camera_environment.hpp"
+
+#include <drm_fourcc.h>
+#include <spdlog/spdlog.h>
+
+#include <bit>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "camera/yuv_matrix.hpp"
+
+namespace puddle::systems {
+
+using camera::PixelLayout;
+using params::ParamId;
+
+namespace {
+
+int mip_count(int size) {
+    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
+}
+
+// Makes `texture` anew only when its shape changes: once per stream, never per frame.
+void ensure_texture(gpu::Device& device, gpu::Texture& texture, const gpu::TextureDesc& desc) {
+    if (texture && texture.width() == desc.width && texture.height() == desc.height &&
+        texture.desc().format == desc.format && texture.desc().mip_levels == desc.mip_levels)
+        return;
+    texture = device.create_texture(desc);
+}
+
+void ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int height) {
+    ensure_texture(device, env.colour,
+                   {.label = "camera colour",
+                    .format = gpu::TextureFormat::SRGB8_A8,
+                    .width = width,
+                    .height = height,
+                    .mip_levels = mip_count(std::max(width, height))});
+}
+
+const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::CameraImage& image,
+                                        CameraEnvironment& env) {
+    const auto index = static_cast<std::size_t>(image.buffer_index);
+    if (index >= env.imported.size()) env.imported.resize(index + 1);  // once per driver buffer
+    gpu::ExternalImage& cached = env.imported[index];
+    if (!cached) {
+        const bool nv12 = image.layout == PixelLayout::Nv12;
+        const auto pitch = static_cast<std::uint32_t>(image.stride);
+        auto made = device.create_external_image(
+            {.label = "camera buffer",
+             .drm_fourcc = nv12 ? DRM_FORMAT_NV12 : DRM_FORMAT_YUYV,
+             .width = image.width,
+             .height = image.height,
+             .planes = {{.fd = image.dmabuf_fd, .offset = 0, .pitch = pitch},
+                        {.fd = nv12 ? image.dmabuf_fd : -1,
+                         .offset = nv12 ? pitch * static_cast<std::uint32_t>(image.height) : 0,
+                         .pitch = pitch}},
+             .bt709 = image.matrix == camera::YuvMatrix::Bt709,
+             .full_range = image.full_range});
+        if (!made) {
+            spdlog::warn("{}; copying camera frames instead", made.error().message);
+            env.zero_copy = false;
+            return nullptr;
+        }
+        cached = std::move(made).value();
+    }
+    return &cached;
+}
+
+}  // namespace
+
+Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
+    env.built = true;
+    env.support = gpu::probe_external_image_support();
+    env.zero_copy = env.support.dmabuf_import;
+    auto make = [&](const char* label, const char* file, std::vector<std::string> defines,
+                    std::vector<std::string> textures, gpu::Pipeline& out) -> Result<void> {
+        auto p = device.create_pipeline({.label = label,
+                                         .fragment = file,
+                                         .defines = std::move(defines),
+                                         .textures = std::move(textures)});
+        if (!p) return p.error();
+        out = std::move(p).value();
+        return {};
+    };
+    const std::vector<std::string> planes{"u_plane0", "u_plane1"}, cube{"u_env", "u_camera"};
+    if (auto r =
+            make("camera convert (YUYV)", "camera_convert.frag", {"LAYOUT_YUYV"}, planes, env.convert_yuyv);
+        !r)
+        return r;
+    if (auto r =
+            make("camera convert (NV12)", "camera_convert.frag", {"LAYOUT_NV12"}, planes, env.convert_nv12);
+        !r)
+        return r;
+    if (env.support.external_sampler) {
+        if (auto r = make("camera convert (external)", "camera_convert.frag", {"EXTERNAL_OES"},
+                          {"u_external"}, env.convert_external);
+            !r)
+            return r;
+    }
+    if (auto r = make("camera cube (planar)", "camera_cube.frag", {}, cube, env.cube_planar); !r) return r;
+    if (auto r = make("camera cube (mirror ball)", "camera_cube.frag", {"MAPPING_MIRROR_BALL"}, cube,
+                      env.cube_mirror_ball);
+        !r)
+        return r;
+    env.nearest = device.create_sampler(
+        {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+    env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
+    env.cube = device.create_texture({.label = "camera environment",
+                                      .kind = gpu::TextureKind::Cube,
+                                      .format = gpu::TextureFormat::SRGB8_A8,
+                                      .width = camera_cube_size,
+                                      .height = camera_cube_size,
+                                      .mip_levels = mip_count(camera_cube_size)});
+    return {};
+}
+
+Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image,
+                                 CameraEnvironment& env) {
+    if (!env.built) {
+        if (auto r = build_camera_pipelines(device, env); !r) {
+            env.failed = true;
+            return r;
+        }
+    }
+    if (env.failed) return {};
+    env.pending = image;
+    env.pending.data = {};
+    env.layout = image.layout;
+    env.pending_import = nullptr;
+    ensure_colour(device, env, image.width, image.height);
+    switch (image.layout) {
+        case PixelLayout::Rgba:
+            env.colour.upload_rows(image.data, image.stride);
+            env.colour.generate_mipmaps();
+            env.convert_due = false;
+            env.has_frame = true;
+            env.cube_due = true;
+            return {};
+        case PixelLayout::Yuyv:
+        case PixelLayout::Nv12:
+            if (env.zero_copy && image.dmabuf_fd >= 0 && env.support.external_sampler)
+                env.pending_import = import_buffer(device, image, env);
+            if (!env.pending_import) {
+                const bool yuyv = image.layout == PixelLayout::Yuyv;
+                if (yuyv &&
+                    image.stride % 4 != 0)  // GL counts row lengths in whole RGBA8 texels (pixel pairs)
+                    return make_error(ExitCode::Runtime,
+                                      "camera: YUYV bytesperline {} is not a whole number of pixel pairs",
+                                      image.stride);
+                ensure_texture(device, env.plane0,
+                               {.label = "camera plane 0",
+                                .format = yuyv ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::R8,
+                                .width = yuyv ? image.width / 2 : image.width,
+                                .height = image.height});
+                env.plane0.upload_rows(image.data, image.stride);
+                if (!yuyv) {
+                    ensure_texture(device, env.plane1,
+                                   {.label = "camera plane 1 (UV)",
+                                    .format = gpu::TextureFormat::RG8,
+                                    .width = image.width / 2,
+                                    .height = image.height / 2});
+                    const auto luma =
+                        static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(image.height);
+                    env.plane1.upload_rows(image.data.subspan(luma), image.stride);
+                }
+            }
+            env.convert_due = true;
+            return {};
+    }
+    return {};
+}
+
+void drop_camera_frames(CameraEnvironment& env) {
+    env.has_frame = false;
+    env.convert_due = false;
+    env.pending_import = nullptr;
+    env.imported.clear();  // the buffers they were made from are gone
+}
+
+void camera_environment_system(gpu::Device& device, const params::Params& params, const Environment& sky,
+                               CameraEnvironment& env) {
+    if (env.failed || !env.built) return;
+    if (env.convert_due) {
+        env.convert_due = false;
+        const camera::YuvToRgb m = camera::yuv_to_rgb(env.pending.matrix, env.pending.full_range);
+        auto pass = device.begin_pass(
+            {.label = "camera convert",
+             .target = {.texture = &env.colour, .size = {env.colour.width(), env.colour.height()}}});
+        if (env.pending_import) {
+            pass.set_pipeline(env.convert_external)
+                .set_texture(0, env.pending_import->texture(), env.linear)
+                .set("u_size", glm::vec2(env.colour.width(), env.colour.height()));
+        } else {
+            const bool yuyv = env.layout == PixelLayout::Yuyv;
+            pass.set_pipeline(yuyv ? env.convert_yuyv : env.convert_nv12)
+                .set_texture(0, env.plane0, env.nearest)
+                .set_texture(1, yuyv ? env.plane0 : env.plane1, env.nearest)
+                .set("u_yuv_matrix", m.matrix)
+                .set("u_yuv_offset", m.offset);
+        }
+        pass.draw_fullscreen();
+        pass.end();
+        env.colour.generate_mipmaps();
+        env.has_frame = true;
+        env.cube_due = true;
+    }
+    if (!env.has_frame) return;
+    if (!env.cube_due && env.cube_params_revision == params.revision()) return;
+    env.cube_due = false;
+    env.cube_params_revision = params.revision();
+
+    // The image centre looks toward -X, 35 degrees up: where the default view's reflection looks.
+    const glm::vec3 axis = glm::normalize(glm::vec3(-1.0f, 0.7f, 0.0f));
+    const glm::vec3 right = glm::normalize(glm::cross(axis, glm::vec3(0, 1, 0)));
+    const glm::vec3 up = glm::cross(right, axis);
+    const bool ball = params.s(ParamId::environment_camera_mapping) == "mirror_ball";
+    const float aspect =
+        static_cast<float>(env.colour.width()) / static_cast<float>(std::max(env.colour.height(), 1));
+    const float tan_half = std::tan(glm::radians(params.f(ParamId::environment_camera_fov)) * 0.5f);
+    for (int face = 0; face < 6; ++face) {
+        auto pass = device.begin_pass(
+            {.label = "camera cube face",
+             .target = {.texture = &env.cube, .size = {camera_cube_size, camera_cube_size}, .face = face}});
+        pass.set_pipeline(ball ? env.cube_mirror_ball : env.cube_planar)
+            .set_texture(0, sky.cube, sky.sampler)
+            .set_texture(1, env.colour, env.linear)
+            .set("u_env_rgbm", sky.rgbm ? 1 : 0)
+            .set("u_face", face)
+            .set("u_axis", axis)
+            .set("u_right", right)
+            .set("u_up", up)
+            .set("u_aspect", aspect)
+            .set("u_tan_half_fov", tan_half)
+            .set("u_environment_camera_blend", params.f(ParamId::environment_camera_blend));
+        pass.draw_fullscreen();
+    }
+    env.cube.generate_mipmaps();
+}
+
+}  // namespace puddle::systems

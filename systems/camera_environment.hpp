@@ -1,0 +1,57 @@
+#pragma once
+// The camera's frame as an environment: upload (a copy with glTexSubImage2D, or a cached EGLImage per
+// driver buffer where dmabufs can be imported), YUV to colour in a shader, then a small cube map
+// rendered from the image by the chosen mapping and mixed with the static cubemap. The puddle pass
+// samples that cube in place of the cubemap while it is active: the puddle shader is unchanged.
+
+#include <cstdint>
+#include <vector>
+
+#include "camera/camera_image.hpp"
+#include "gpu/device.hpp"
+#include "params/param_store.hpp"
+#include "systems/environment_system.hpp"
+#include "util/result.hpp"
+
+namespace puddle::systems {
+
+inline constexpr int camera_cube_size = 256;  // per face: the reflection is blurred by ripples anyway
+
+// Resource.
+struct CameraEnvironment {
+    gpu::Texture plane0, plane1;  // the copied frame: RGBA8 (YUYV pairs), or R8 + RG8 (NV12)
+    gpu::Texture colour;          // the converted frame, sRGB, camera size, with mipmaps
+    gpu::Texture cube;            // what the puddle reflects while the camera streams
+    gpu::Sampler nearest, linear;
+    gpu::Pipeline convert_yuyv, convert_nv12, convert_external, cube_planar, cube_mirror_ball;
+    std::vector<gpu::ExternalImage> imported;  // per driver buffer (zero-copy path)
+    gpu::ExternalImageSupport support;
+    bool zero_copy = false;  // dmabuf import available: use it for frames that carry a dmabuf
+    bool built = false;      // pipelines made (on first use: most runs never need them)
+    bool failed = false;     // a GPU error disabled the camera environment; the cubemap stays
+
+    camera::PixelLayout layout = camera::PixelLayout::Rgba;
+    camera::CameraImage pending;  // the uploaded frame's description (data not kept)
+    bool convert_due = false;     // a frame was uploaded and not yet converted
+    const gpu::ExternalImage* pending_import = nullptr;
+    bool has_frame = false;  // colour holds a frame of the current stream
+    bool cube_due = false;
+    std::uint64_t cube_params_revision = 0;
+
+    // The cube the puddle pass should sample, or null for the static cubemap.
+    const gpu::Texture* reflection() const { return has_frame && !failed ? &cube : nullptr; }
+};
+
+Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env);
+
+// Input stage: hands one new frame to the GPU (a copy, or an import of its dmabuf). No conversion yet.
+Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image,
+                                 CameraEnvironment& env);
+// The stream ended: forget its frames and imports; the puddle goes back to the cubemap.
+void drop_camera_frames(CameraEnvironment& env);
+
+// Render stage, before the puddle: converts the newest frame and renders the cube when something changed.
+void camera_environment_system(gpu::Device& device, const params::Params& params, const Environment& sky,
+                               CameraEnvironment& env);
+
+}  // namespace puddle::systems

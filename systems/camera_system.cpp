@@ -1,0 +1,109 @@
+#include "systems/camera_system.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace puddle::systems {
+
+using params::ParamId;
+
+namespace {
+
+// Compared field by field each frame, so the steady state builds no strings.
+bool still_requested(const params::Params& p, const camera::CaptureRequest& r) {
+    return p.s(ParamId::environment_camera_device) == r.device &&
+           p.i(ParamId::environment_camera_width) == r.width &&
+           p.i(ParamId::environment_camera_height) == r.height &&
+           static_cast<double>(p.f(ParamId::environment_camera_fps)) == r.fps &&
+           camera::parse_format_preference(p.s(ParamId::environment_camera_format)) == r.format;
+}
+
+bool wants_camera(const params::Params& params) {
+    return params.s(ParamId::environment_source) == "camera";
+}
+
+void close_feed(CameraFeed& feed, CameraEnvironment& env) {
+    drop_camera_frames(env);
+    feed.source.reset();
+}
+
+// One attempt; a failure is logged once per distinct message and retried later.
+void try_open(CameraFeed& feed, const camera::CaptureRequest& request) {
+    feed.retry_at = feed.now + camera_retry_seconds;
+    auto opened = camera::open_camera_source(*feed.io, request);
+    if (!opened) {
+        if (opened.error().message != feed.last_failure)
+            spdlog::warn("{}; reflecting the cubemap, retrying every {:g} s", opened.error().message,
+                         camera_retry_seconds);
+        else
+            spdlog::debug("{}", opened.error().message);
+        feed.last_failure = opened.error().message;
+        return;
+    }
+    feed.source = std::move(opened).value();
+    feed.request = request;
+    feed.last_failure.clear();
+    spdlog::info("camera: streaming {}", feed.source->describe());
+}
+
+}  // namespace
+
+camera::CaptureRequest camera_request(const params::Params& params) {
+    return {.device = params.s(ParamId::environment_camera_device),
+            .width = params.i(ParamId::environment_camera_width),
+            .height = params.i(ParamId::environment_camera_height),
+            .fps = params.f(ParamId::environment_camera_fps),
+            .format = camera::parse_format_preference(params.s(ParamId::environment_camera_format)),
+            .export_dmabuf = true};
+}
+
+Result<void> open_camera_feed(CameraFeed& feed, const params::Params& params) {
+    if (!wants_camera(params)) return {};
+    const camera::CaptureRequest request = camera_request(params);
+    if (request.device.starts_with("mock:")) {
+        auto opened = camera::open_camera_source(*feed.io, request);
+        if (!opened) return opened.error();
+        feed.source = std::move(opened).value();
+        feed.request = request;
+        spdlog::info("camera: streaming {}", feed.source->describe());
+        return {};
+    }
+    try_open(feed, request);
+    return {};
+}
+
+void camera_feed_system(CameraFeed& feed, const params::Params& params, const FrameClock& clock,
+                        gpu::Device& device, CameraEnvironment& env) {
+    feed.now += clock.frame_dt;
+    if (!wants_camera(params)) {
+        if (feed.source)
+            spdlog::info("camera: environment.source = cubemap; closing {}", feed.request.device);
+        close_feed(feed, env);
+        return;
+    }
+    if (feed.source && !still_requested(params, feed.request)) {
+        spdlog::info("camera: settings changed; reopening {}", params.s(ParamId::environment_camera_device));
+        close_feed(feed, env);
+        feed.retry_at = feed.now;
+    }
+    if (!feed.source) {
+        if (feed.now < feed.retry_at) return;
+        try_open(feed, camera_request(params));
+        if (!feed.source) return;
+    }
+    auto polled = feed.source->poll(feed.now);
+    if (!polled) {
+        ++feed.losses;
+        spdlog::warn("{}; back to the cubemap, retrying every {:g} s", polled.error().message,
+                     camera_retry_seconds);
+        feed.last_failure = polled.error().message;
+        close_feed(feed, env);
+        feed.retry_at = feed.now + camera_retry_seconds;
+        return;
+    }
+    if (!*polled) return;
+    ++feed.frames;
+    if (auto r = upload_camera_frame(device, **polled, env); !r)
+        spdlog::error("{}; reflecting the cubemap", r.error().message);
+}
+
+}  // namespace puddle::systems

@@ -1,0 +1,206 @@
+// The camera frame on the GPU (surfaceless EGL): YUV converted with the driver's matrix and range, the
+// external-sampler path through an EGLImage, and the cube the puddle reflects.
+#include "systems/camera_environment.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "support/gpu_fixture.hpp"
+
+namespace puddle::test {
+namespace {
+
+using camera::CameraImage;
+using camera::PixelLayout;
+using camera::YuvMatrix;
+using systems::CameraEnvironment;
+
+constexpr int tolerance = 3;  // of 255: 8-bit YUV codes of pure colours are rounded, and sRGB is re-encoded
+
+struct Rgb {
+    int r, g, b;
+};
+
+// Texel (x, y) of a read-back texture (GL rows: y = camera row, top first as uploaded).
+Rgb texel(const std::vector<float>& t, int width, int x, int y) {
+    const float* p = &t[(std::size_t(y) * width + x) * 4];
+    return {int(std::lround(p[0] * 255)), int(std::lround(p[1] * 255)), int(std::lround(p[2] * 255))};
+}
+
+void expect_near(Rgb got, Rgb want, const std::string& what) {
+    EXPECT_NEAR(got.r, want.r, tolerance) << what;
+    EXPECT_NEAR(got.g, want.g, tolerance) << what;
+    EXPECT_NEAR(got.b, want.b, tolerance) << what;
+}
+
+class CameraEnvironmentTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        engine = make_engine(make_params({}), {64, 36});
+        ASSERT_TRUE(engine);
+        auto r = systems::build_camera_pipelines(engine->device(), env);
+        ASSERT_TRUE(r) << r.error().message;
+    }
+    // Uploads and converts one frame, returns the colour texture.
+    std::vector<float> convert(const CameraImage& image) {
+        gpu::Device& device = engine->device();
+        auto r = systems::upload_camera_frame(device, image, env);
+        EXPECT_TRUE(r) << (r ? "" : r.error().message);
+        systems::camera_environment_system(device, engine->params(), sky(), env);
+        EXPECT_TRUE(env.has_frame);
+        return device.read_texture(env.colour);
+    }
+    const systems::Environment& sky() { return engine->world().resource<systems::Environment>(); }
+    std::unique_ptr<app::Engine> engine;
+    CameraEnvironment env;
+};
+
+TEST_F(CameraEnvironmentTest, YuyvLimitedBt709ConvertsToTheExpectedColours) {
+    // Four pixel pairs: white, red, green, blue in BT.709 limited range; rows padded as drivers do.
+    const std::array<std::array<int, 3>, 4> yuv{
+        {{235, 128, 128}, {63, 102, 240}, {173, 42, 26}, {32, 240, 118}}};
+    const std::array<Rgb, 4> rgb{{{255, 255, 255}, {255, 0, 0}, {0, 255, 0}, {0, 0, 255}}};
+    const int width = 8, height = 2, stride = width * 2 + 12;
+    std::vector<std::byte> frame(std::size_t(stride) * height, std::byte{0x55});
+    for (int y = 0; y < height; ++y)
+        for (int pair = 0; pair < 4; ++pair) {
+            auto* p = &frame[std::size_t(y) * stride + std::size_t(pair) * 4];
+            p[0] = p[2] = std::byte(yuv[pair][0]);
+            p[1] = std::byte(yuv[pair][1]);
+            p[3] = std::byte(yuv[pair][2]);
+        }
+    const auto out = convert({.layout = PixelLayout::Yuyv,
+                              .width = width,
+                              .height = height,
+                              .stride = stride,
+                              .data = frame,
+                              .matrix = YuvMatrix::Bt709,
+                              .full_range = false});
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            expect_near(texel(out, width, x, y), rgb[x / 2], fmt::format("pixel {},{}", x, y));
+}
+
+TEST_F(CameraEnvironmentTest, Nv12FullRangeBt601ConvertsToTheExpectedColours) {
+    // 4x4 pixels, four 2x2 chroma blocks: red, green / blue, mid grey (JPEG-style full-range BT.601).
+    const std::array<std::array<int, 3>, 4> yuv{
+        {{76, 85, 255}, {150, 44, 21}, {29, 255, 107}, {128, 128, 128}}};
+    const std::array<Rgb, 4> rgb{{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {128, 128, 128}}};
+    const int width = 4, height = 4, stride = 8;
+    std::vector<std::byte> frame(std::size_t(stride) * height * 3 / 2, std::byte{0x55});
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            frame[std::size_t(y) * stride + x] = std::byte(yuv[(y / 2) * 2 + x / 2][0]);
+    for (int by = 0; by < 2; ++by)
+        for (int bx = 0; bx < 2; ++bx) {
+            auto* uv = &frame[std::size_t(stride) * height + std::size_t(by) * stride + std::size_t(bx) * 2];
+            uv[0] = std::byte(yuv[by * 2 + bx][1]);
+            uv[1] = std::byte(yuv[by * 2 + bx][2]);
+        }
+    const auto out = convert({.layout = PixelLayout::Nv12,
+                              .width = width,
+                              .height = height,
+                              .stride = stride,
+                              .data = frame,
+                              .matrix = YuvMatrix::Bt601,
+                              .full_range = true});
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            expect_near(texel(out, width, x, y), rgb[(y / 2) * 2 + x / 2], fmt::format("pixel {},{}", x, y));
+}
+
+TEST_F(CameraEnvironmentTest, TheRangeMatters) {
+    // The same codes read as full range come out darker at white and lighter at black.
+    const int width = 2, height = 1, stride = 4;
+    std::vector<std::byte> white{std::byte{235}, std::byte{128}, std::byte{235}, std::byte{128}};
+    const auto limited = convert({.layout = PixelLayout::Yuyv,
+                                  .width = width,
+                                  .height = height,
+                                  .stride = stride,
+                                  .data = white,
+                                  .full_range = false});
+    const auto full = convert({.layout = PixelLayout::Yuyv,
+                               .width = width,
+                               .height = height,
+                               .stride = stride,
+                               .data = white,
+                               .full_range = true});
+    EXPECT_NEAR(texel(limited, width, 0, 0).g, 255, tolerance);
+    EXPECT_NEAR(texel(full, width, 0, 0).g, 235, tolerance);
+}
+
+TEST_F(CameraEnvironmentTest, ExternalSamplerPathMatchesTheSource) {
+    if (!env.support.external_sampler || !env.support.texture_images)
+        GTEST_SKIP() << "needs GL_OES_EGL_image_external_essl3 and EGL_KHR_gl_texture_2D_image";
+    if (env.support.dmabuf_import)
+        std::printf("note: this EGL also imports dmabufs (zero-copy camera path available)\n");
+    gpu::Device& device = engine->device();
+    // Where dmabuf import is missing, an EGLImage made from a GL texture drives the same sampler path.
+    const int width = 4, height = 2;
+    const std::array<Rgb, 8> colours{{{255, 0, 0},
+                                      {0, 255, 0},
+                                      {0, 0, 255},
+                                      {255, 255, 255},
+                                      {10, 20, 30},
+                                      {128, 64, 32},
+                                      {0, 0, 0},
+                                      {200, 180, 90}}};
+    std::vector<std::uint8_t> rgba;
+    for (const Rgb& c : colours)
+        rgba.insert(rgba.end(), {std::uint8_t(c.r), std::uint8_t(c.g), std::uint8_t(c.b), 255});
+    gpu::Texture source = device.create_texture({.label = "test source", .width = width, .height = height});
+    source.upload(std::as_bytes(std::span(rgba)));
+    auto image = device.create_external_image({.label = "test image", .source = &source});
+    ASSERT_TRUE(image) << image.error().message;
+    env.colour = device.create_texture({.label = "camera colour",
+                                        .format = gpu::TextureFormat::SRGB8_A8,
+                                        .width = width,
+                                        .height = height,
+                                        .mip_levels = 3});
+    env.pending_import = &*image;
+    env.convert_due = true;
+    systems::camera_environment_system(device, engine->params(), sky(), env);
+    const auto out = device.read_texture(env.colour);
+    for (int i = 0; i < width * height; ++i)
+        expect_near(texel(out, width, i % width, i / width), colours[std::size_t(i)],
+                    fmt::format("texel {}", i));
+}
+
+TEST_F(CameraEnvironmentTest, BlendMixesTheCameraWithTheCubemap) {
+    gpu::Device& device = engine->device();
+    std::vector<std::uint8_t> orange;
+    for (int i = 0; i < 16 * 9; ++i) orange.insert(orange.end(), {240, 120, 20, 255});
+    const CameraImage image{.layout = PixelLayout::Rgba,
+                            .width = 16,
+                            .height = 9,
+                            .stride = 16 * 4,
+                            .data = std::as_bytes(std::span(orange)),
+                            .full_range = true};
+    auto face_mean = [&](const char* blend, int face) {
+        engine->params().set(params::ParamId::environment_camera_blend, std::stof(blend),
+                             params::ParamSource::CommandLine);
+        EXPECT_TRUE(systems::upload_camera_frame(device, image, env));
+        systems::camera_environment_system(device, engine->params(), sky(), env);
+        const auto t = device.read_texture(env.cube, face);
+        std::array<double, 3> mean{};
+        for (std::size_t i = 0; i < t.size(); i += 4)
+            for (std::size_t c = 0; c < 3; ++c) mean[c] += t[i + c] * 255.0 / (t.size() / 4);
+        return mean;
+    };
+    for (int face : {0, 3}) {
+        const auto camera_only = face_mean("1", face);
+        EXPECT_NEAR(camera_only[0], 240, tolerance) << "face " << face;
+        EXPECT_NEAR(camera_only[1], 120, tolerance) << "face " << face;
+        EXPECT_NEAR(camera_only[2], 20, tolerance) << "face " << face;
+        const auto sky_only = face_mean("0", face);
+        EXPECT_LT(sky_only[0], 100) << "the night sky is dark, face " << face;
+        const auto half = face_mean("0.5", face);
+        EXPECT_GT(half[0], sky_only[0] + 40);
+        EXPECT_LT(half[0], camera_only[0] - 20);
+    }
+}
+
+}  // namespace
+}  // namespace puddle::test

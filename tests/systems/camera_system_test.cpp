@@ -1,0 +1,159 @@
+// The camera feed inside the running engine, against the fake V4L2 device: no device at start, a
+// device that appears, vanishes mid-stream and comes back. The display never stops, the puddle
+// reflects the cubemap while no camera streams, and nothing leaks.
+#include "systems/camera_system.hpp"
+
+#include <gtest/gtest.h>
+#include <linux/videodev2.h>
+
+#include "camera/fake_v4l2_device.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
+
+namespace puddle::test {
+namespace {
+
+constexpr const char* fake_path = "/dev/puddle-test-camera";  // never a real device
+
+struct Rig {
+    FakeV4l2Device dev;  // outlives the engine, whose feed closes through it
+    std::unique_ptr<app::Engine> engine;
+    systems::CameraFeed& feed() { return engine->world().resource<systems::CameraFeed>(); }
+    const systems::CameraEnvironment& env() { return engine->world().resource<systems::CameraEnvironment>(); }
+    // One frame; while streaming, the camera delivers a white YUYV frame each display frame.
+    void frame() {
+        if (dev.streaming()) {
+            std::vector<std::byte> f(static_cast<std::size_t>(dev.size_image()), std::byte{128});
+            for (std::size_t i = 0; i < f.size(); i += 2) f[i] = std::byte{235};
+            dev.push_frame({f});
+        }
+        auto r = engine->frame(1.0 / 30.0);
+        ASSERT_TRUE(r) << r.error().message;
+    }
+    // Frames until `done` holds; returns the seconds it took, or -1 after `limit` seconds.
+    template <class Done>
+    double until(Done done, double limit) {
+        for (int n = 0; n * (1.0 / 30.0) <= limit; ++n) {
+            if (done()) return n / 30.0;
+            frame();
+        }
+        return -1.0;
+    }
+};
+
+TEST(CameraFeed, FallsBackToTheCubemapAndRecoversByItself) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.dev.max_buffers = 3;
+    rig.dev.unplug();
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+
+    // No device at start: the cubemap, and the display keeps going.
+    for (int i = 0; i < 10; ++i) rig.frame();
+    EXPECT_FALSE(rig.feed().streaming());
+    EXPECT_EQ(rig.env().reflection(), nullptr);
+    const assets::Image cubemap = rig.engine->read_frame();
+
+    // Plugged in: found by the retry timer within a second, and the reflection changes.
+    rig.dev.replug();
+    const double found = rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5);
+    EXPECT_GE(found, 0.0) << "streaming did not start within 1.5 s";
+    EXPECT_LE(found, 1.0 + 2.0 / 30.0);
+    for (int i = 0; i < 3; ++i) rig.frame();
+    const assets::Image camera = rig.engine->read_frame();
+    EXPECT_GT(mean_luma(camera), mean_luma(cubemap) + 20)
+        << "a white room reflects brighter than the night sky";
+    EXPECT_EQ(rig.dev.live_mappings(), 3);
+
+    // Unplugged mid-stream: back to the cubemap at the next frame, every mapping and descriptor released.
+    rig.dev.unplug();
+    rig.frame();
+    EXPECT_FALSE(rig.feed().streaming());
+    EXPECT_EQ(rig.env().reflection(), nullptr);
+    EXPECT_EQ(rig.dev.live_mappings(), 0);
+    EXPECT_EQ(rig.dev.open_fds(), 0);
+    EXPECT_EQ(rig.feed().losses, 1u);
+    for (int i = 0; i < 40; ++i) rig.frame();  // retries fail quietly while it is away
+    EXPECT_EQ(rig.dev.open_fds(), 0);
+
+    // Plugged back: it resumes by itself.
+    rig.dev.replug();
+    const double resumed = rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5);
+    EXPECT_GE(resumed, 0.0) << "streaming did not resume within 1.5 s";
+    EXPECT_EQ(rig.dev.opens(), 2);
+}
+
+TEST(CameraFeed, SourceCubemapClosesTheDeviceAndChangedSettingsReopenIt) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}, {32, 18}}}};
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
+    EXPECT_EQ(rig.dev.negotiated_width(), 64);
+
+    // Live tuning: a new size reopens the device at once.
+    rig.engine->params().set(params::ParamId::environment_camera_width, 32, params::ParamSource::CommandLine);
+    rig.engine->params().set(params::ParamId::environment_camera_height, 18,
+                             params::ParamSource::CommandLine);
+    ASSERT_GE(
+        rig.until([&] { return rig.env().reflection() != nullptr && rig.dev.negotiated_width() == 32; }, 0.5),
+        0.0);
+    EXPECT_EQ(rig.dev.opens(), 2);
+    EXPECT_EQ(rig.dev.open_fds(), 1);
+
+    rig.engine->params().set(params::ParamId::environment_source, std::string("cubemap"),
+                             params::ParamSource::CommandLine);
+    rig.frame();
+    EXPECT_EQ(rig.env().reflection(), nullptr);
+    EXPECT_EQ(rig.dev.open_fds(), 0);
+    EXPECT_EQ(rig.dev.live_mappings(), 0);
+}
+
+TEST(CameraFeed, NewestFrameWinsAndASlowCameraNeverStallsTheDisplay) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.dev.max_buffers = 4;
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
+    auto frame_of = [&](std::uint8_t luma) {
+        std::vector<std::byte> f(static_cast<std::size_t>(rig.dev.size_image()), std::byte{128});
+        for (std::size_t i = 0; i < f.size(); i += 2) f[i] = std::byte{luma};
+        return FakeFrame{f};
+    };
+    auto centre_luma = [&] { return mean_luma(rig.engine->read_frame(), 30, 20, 66, 34); };
+    // Three frames arrive within one display frame: one upload, the newest (bright) one.
+    const std::uint64_t before = rig.feed().frames;
+    for (std::uint8_t luma : {16, 16, 235}) rig.dev.push_frame(frame_of(luma));
+    ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    EXPECT_EQ(rig.feed().frames, before + 1);
+    const double bright = centre_luma();
+    // No frame for a while: the display goes on, keeping the last picture.
+    for (int i = 0; i < 10; ++i) ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    EXPECT_EQ(rig.feed().frames, before + 1);
+    EXPECT_NE(rig.env().reflection(), nullptr);
+    EXPECT_NEAR(centre_luma(), bright, 12.0) << "the last frame stays (only the rain moves)";
+    // A dark frame then shows at once.
+    rig.dev.push_frame(frame_of(16));
+    ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    EXPECT_LT(centre_luma(), bright - 20);
+}
+
+}  // namespace
+}  // namespace puddle::test
