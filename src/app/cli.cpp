@@ -55,6 +55,11 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")->check(CLI::Range(0, 2147483647));
     cli.add_option("--fps-cap", o.fps_cap, "Render at most this many frames per second (fanless boards)")
         ->check(CLI::Range(0.0, 1000.0));
+    cli.add_option("--stats", o.stats_every,
+                   "Log fps, frame-time percentiles (p50/p95/p99), CPU time per frame and resident memory every SECONDS (default 5)")
+        ->expected(0, 1)
+        ->default_str("5")
+        ->check(CLI::Range(0.1, 3600.0));
     cli.add_option("--gpio", o.gpio, "Knob backend: gpiod (the GPIO header), or mock:PATH to drive knobs from a script or FIFO");
     cli.add_option("--state", o.state_path, "Where knob changes are saved (default: $STATE_DIRECTORY/state.toml, else ~/.local/state/puddle/state.toml)");
     cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")

@@ -23,6 +23,7 @@ struct CliOptions {
     std::optional<int> seed;          // shorthand for --set rain.seed=N
     double fps_cap = 0;               // 0: the display's pace (vblank), headless: as fast as possible
     std::string log_level = "info";
+    double stats_every = 0;           // --stats[=SECONDS]: log fps, frame-time percentiles, CPU and memory; 0: off
     std::string gpio = "gpiod";       // knob backend: gpiod, or mock:PATH (a script or FIFO of line changes)
     std::string state_path;           // knob state file; empty: $STATE_DIRECTORY, $XDG_STATE_HOME or ~/.local/state
 };
