@@ -15,7 +15,9 @@
 // After the table: the render shader's estimated per-pixel cost (texture fetches and ALU operations,
 // gpu/shader_cost.hpp) for both methods, then a check against the stored baseline
 // (src/app/bench_baseline.json): ratios to the floor and the shader cost, never milliseconds. A figure
-// over its baseline by more than the tolerance is flagged REGRESSION and the exit status is 1.
+// over its baseline by more than the tolerance is flagged REGRESSION; the exit status is 1 when the
+// shader cost (exact, so a real change) regressed. A ratio only warns: on a shared machine one run's
+// ratio can be off by half; repeat the run before believing it.
 //
 // Every measurement ends with Device::finish() inside the timed region: GL calls only queue work, so
 // without it a pass would look as cheap as its API calls.
@@ -418,7 +420,7 @@ bool check_baseline(const Figures& now, const Figures& baseline, const std::stri
         }
         const bool exact = name.starts_with("shader/");
         const bool bad = exact ? value > base->second + 0.5 : value > base->second * ratio_tolerance;
-        regressed = regressed || bad;
+        regressed = regressed || (bad && exact);  // timings only warn: one noisy run must not fail a build
         std::printf("  %-36s %9.2f  baseline %9.2f  %s\n", name.c_str(), value, base->second,
                     bad ? "REGRESSION" : value < base->second / ratio_tolerance ? "better" : "ok");
     }
