@@ -78,7 +78,7 @@ float water_sdf(vec3 p) {
     return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
 }
 
-bool hit_water(vec3 o, vec3 d, out vec3 p) {
+bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
     float t;
     vec3 bound = 0.5 * u_puddle_size + vec3(0.0, 4.0 * u_wave_height_scale, 0.0);
     if (!enter_box(o, d, bound, t)) return false;
@@ -89,17 +89,20 @@ bool hit_water(vec3 o, vec3 d, out vec3 p) {
         t += dist;
     }
     p = o + t * d;
+    s = surface_at(p.xz);
     return water_sdf(p) < 0.05;
 }
 #else
-bool hit_water(vec3 o, vec3 d, out vec3 p) {
+bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
     if (d.y >= 0.0) return false;
     float t = (top() - o.y) / d.y;
     p = o + t * d;
     if (any(greaterThan(abs(p.xz), 0.5 * u_puddle_size.xz))) return false;
-    // The top is displaced by a fraction of a unit: two fixed-point steps land on it.
+    // The top is displaced by a fraction of a unit: two fixed-point steps land on it. The second step's
+    // texel, read a hair from where it lands, also gives the slopes: one surface read fewer per pixel.
     for (int i = 0; i < 2; ++i) {
-        t = (water_height(p.xz) - o.y) / d.y;
+        s = surface_at(p.xz);
+        t = (top() + s.r * u_wave_height_scale - o.y) / d.y;
         p = o + t * d;
     }
     return true;
@@ -129,14 +132,14 @@ void main() {
     vec3 d = normalize(u_cam_forward + ndc.x * u_cam_scale.x * u_cam_right + ndc.y * u_cam_scale.y * u_cam_up);
 
     vec3 colour;
-    vec3 p;
-    if (hit_water(o, d, p)) {
-        vec3 s = surface_at(p.xz);
+    vec3 p, s;
+    if (hit_water(o, d, p, s)) {
         vec3 n = normalize(vec3(s.g * u_water_normal_strength, 1.0, s.b * u_water_normal_strength));
 
-        float f0 = pow((1.0 - IOR) / (1.0 + IOR), 2.0);
-        float cos_theta = abs(dot(-d, n));
-        float fresnel = f0 + (1.0 - f0) * pow(1.0 - cos_theta, 5.0);
+        const float f0 = ((1.0 - IOR) / (1.0 + IOR)) * ((1.0 - IOR) / (1.0 + IOR));
+        float x = 1.0 - abs(dot(d, n));
+        float x2 = x * x;
+        float fresnel = f0 + (1.0 - f0) * (x2 * x2 * x);  // Schlick's (1 - cos)^5 without pow
 
         vec3 reflection = environment(reflect(d, n));
 

@@ -11,6 +11,7 @@
 #include "app/cli.hpp"
 #include "app/check.hpp"
 #include "app/engine.hpp"
+#include "app/frame_stats.hpp"
 #include "app/logging.hpp"
 #include "app/service_notify.hpp"
 #include "app/signals.hpp"
@@ -89,6 +90,14 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
     return tuning;
 }
 
+// One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
+void log_stats(const FrameStats::Summary& s) {
+    const MemoryStatus m = read_memory_status();
+    spdlog::info("stats: {:.1f} fps over {} frames; frame ms p50 {:.2f} p95 {:.2f} p99 {:.2f} max {:.2f}; "
+                 "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB",
+                 s.fps, s.frames, s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms, s.cpu_ms, s.main_cpu_ms, m.rss_kib / 1024.0);
+}
+
 }  // namespace
 
 int run(int argc, const char* const* argv) {
@@ -149,7 +158,12 @@ int run(int argc, const char* const* argv) {
     using clock = std::chrono::steady_clock;
     const double fixed_dt = 1.0 / (o.fps_cap > 0 ? o.fps_cap : 60.0);
     auto last = clock::now();
+    FrameStats stats(o.stats_every > 0 ? o.stats_every : 5.0);
     for (long n = 0; frames == 0 || n < frames; ++n) {
+        if (o.stats_every > 0) {
+            stats.tick();
+            if (const auto s = stats.take_report()) log_stats(*s);
+        }
         if (stop.take_reload()) e.world().resource<systems::LiveTuning>().reload_requested = true;
         if (stop.requested() || !e.display().poll_events()) {
             spdlog::info("stopping ({})", stop.last_signal() ? strsignal(stop.last_signal()) : "display closed");
@@ -167,6 +181,13 @@ int run(int argc, const char* const* argv) {
                                                     std::chrono::duration<double>(1.0 / o.fps_cap)));
     }
     service.stopping();
+    if (o.stats_every > 0) {
+        if (const auto s = stats.summary(); s.frames > 0) log_stats(s);
+        const MemoryStatus m = read_memory_status();
+        spdlog::info("stats: peak resident memory {:.1f} MB (VmHWM), {:.1f} MB now (VmRSS: {:.1f} MB anonymous, "
+                     "{:.1f} MB of the binary and shared libraries)",
+                     m.peak_kib / 1024.0, m.rss_kib / 1024.0, m.anon_kib / 1024.0, m.file_kib / 1024.0);
+    }
     systems::save_state(e.world().resource<systems::LiveTuning>());  // knob changes not yet saved
     if (!screenshot.empty()) {
         const assets::Image& image = e.captured().empty() ? e.read_frame() : e.captured();

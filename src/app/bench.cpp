@@ -7,8 +7,17 @@
 //        build/puddle-bench --benchmark_filter='look|drop_pass'  (scenes and drop models only)
 //        build/puddle-bench --benchmark_filter='render|floor'  (any Google Benchmark flag works)
 //        build/puddle-bench --benchmark_min_time=0.5           (quicker; the default here is 2 s)
+//        build/puddle-bench --update-baseline                  (store this run's ratios as the baseline)
+//        build/puddle-bench --baseline=FILE                    (compare with another baseline file)
 // The summary table goes to stdout after the runs; with --benchmark_format=json prefer
 // --benchmark_out=FILE so the table does not mix with the JSON.
+//
+// After the table: the render shader's estimated per-pixel cost (texture fetches and ALU operations,
+// gpu/shader_cost.hpp) for both methods, then a check against the stored baseline
+// (src/app/bench_baseline.json): ratios to the floor and the shader cost, never milliseconds. A figure
+// over its baseline by more than the tolerance is flagged REGRESSION; the exit status is 1 when the
+// shader cost (exact, so a real change) regressed. A ratio only warns: on a shared machine one run's
+// ratio can be off by half; repeat the run before believing it.
 //
 // Every measurement ends with Device::finish() inside the timed region: GL calls only queue work, so
 // without it a pass would look as cheap as its API calls.
@@ -20,6 +29,8 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <regex>
+#include <sstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -32,6 +43,8 @@
 #include "camera/mjpeg_decoder.hpp"
 #include "systems/camera_environment.hpp"
 #include "assets/procedural.hpp"
+#include "gpu/shader_cost.hpp"
+#include "gpu/shader_source.hpp"
 #include "params/config_loader.hpp"
 #include "systems/analytic_ripple_system.hpp"
 #include "systems/drop_system.hpp"
@@ -469,6 +482,89 @@ void print_camera_summary(const Collector& c) {
     }
 }
 
+// The render shader's estimated per-pixel cost for one method, with the default march steps.
+gpu::ShaderCost shader_cost(const char* method) {
+    std::vector<std::string> defines;
+    if (std::string(method) == "raymarch") defines.emplace_back("METHOD_RAYMARCH");
+    auto shader = gpu::assemble_shader("puddle.frag", defines);
+    if (!shader) return {};
+    return gpu::estimate_shader_cost(shader->source, Params{}.i(ParamId::render_march_steps));
+}
+
+// The figures the baseline holds: ratios (lower is better) and shader costs, by name.
+using Figures = std::map<std::string, double>;
+
+Figures figures(const Collector& c) {
+    Figures f;
+    for (glm::ivec2 s : sizes) {
+        const auto floor = c.ms("floor/" + size_name(s));
+        for (const char* stage : {"render", "frame"})
+            for (const char* m : methods)
+                if (const auto ms = c.ms(fmt::format("{}/{}/{}", stage, m, size_name(s))); ms && floor)
+                    f[fmt::format("{}/{}/{} x floor", stage, m, size_name(s))] = *ms / *floor;
+        const auto rm = c.ms("render/raymarch/" + size_name(s)), in = c.ms("render/intersect/" + size_name(s));
+        if (rm && in) f[fmt::format("render/intersect/{} x raymarch", size_name(s))] = *in / *rm;
+    }
+    for (const char* m : methods) {
+        const gpu::ShaderCost cost = shader_cost(m);
+        f[fmt::format("shader/{} texture fetches", m)] = cost.texture_fetches;
+        f[fmt::format("shader/{} alu ops", m)] = cost.alu_ops;
+    }
+    return f;
+}
+
+// A flat JSON object of names and numbers, as write_baseline makes it.
+Figures read_baseline(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    Figures f;
+    const std::regex entry(R"re("([^"]+)"\s*:\s*([-+0-9.eE]+))re");
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), entry); it != std::sregex_iterator(); ++it)
+        f[(*it)[1].str()] = std::stod((*it)[2].str());
+    return f;
+}
+
+bool write_baseline(const std::string& path, Figures f) {
+    for (const auto& [name, value] : read_baseline(path)) f.emplace(name, value);  // keeps what was not run
+    std::ofstream out(path);
+    out << "{\n  \"_about\": \"puddle-bench --update-baseline: ratios to the floor pass (or to raymarch) and the "
+           "render shader's estimated cost; lower is better\",\n";
+    std::size_t k = 0;
+    for (const auto& [name, value] : f)
+        out << fmt::format("  \"{}\": {:.3f}{}\n", name, value, ++k < f.size() ? "," : "");
+    out << "}\n";
+    return static_cast<bool>(out);
+}
+
+// Ratios drift with the machine's load, so they get a generous margin; the shader cost is exact.
+constexpr double ratio_tolerance = 1.25;
+
+// Prints the shader cost and each figure beside its baseline; true when one regressed.
+bool check_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
+    std::printf("\nRender shader, estimated per pixel (longest path, from the source; gpu/shader_cost.hpp)\n");
+    for (const char* m : methods)
+        std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n", m,
+                    now.at(fmt::format("shader/{} texture fetches", m)), now.at(fmt::format("shader/{} alu ops", m)));
+    std::printf("\nAgainst the baseline %s (ratios, lower is better; flagged over %.0f%%)\n", path.c_str(),
+                (ratio_tolerance - 1) * 100);
+    bool regressed = false;
+    for (const auto& [name, value] : now) {
+        const auto base = baseline.find(name);
+        if (base == baseline.end()) {
+            std::printf("  %-36s %9.2f  (no baseline)\n", name.c_str(), value);
+            continue;
+        }
+        const bool exact = name.starts_with("shader/");
+        const bool bad = exact ? value > base->second + 0.5 : value > base->second * ratio_tolerance;
+        regressed = regressed || (bad && exact);  // timings only warn: one noisy run must not fail a build
+        std::printf("  %-36s %9.2f  baseline %9.2f  %s\n", name.c_str(), value, base->second,
+                    bad ? "REGRESSION" : value < base->second / ratio_tolerance ? "better" : "ok");
+    }
+    return regressed;
+}
+
 void register_all() {
     auto add = [](const std::string& name, auto fn) {
         benchmark::RegisterBenchmark(name.c_str(), fn)->UseRealTime()->Unit(benchmark::kMillisecond);
@@ -509,7 +605,18 @@ int main(int argc, char** argv) {
     // steadies the figures and keeps the whole run near a minute. It goes first so a
     // --benchmark_min_time on the command line overrides it.
     static char default_min_time[] = "--benchmark_min_time=2";
-    std::vector<char*> args{argv, argv + argc};
+    std::vector<char*> args{argv[0]};
+    bool update_baseline = false;
+    std::string baseline_path = PUDDLE_BENCH_BASELINE;
+    for (int k = 1; k < argc; ++k) {  // our own flags; the rest are Google Benchmark's
+        const std::string_view a = argv[k];
+        if (a == "--update-baseline")
+            update_baseline = true;
+        else if (a.starts_with("--baseline="))
+            baseline_path = std::string(a.substr(11));
+        else
+            args.push_back(argv[k]);
+    }
     args.insert(args.begin() + 1, default_min_time);
     int args_count = static_cast<int>(args.size());
     benchmark::Initialize(&args_count, args.data());
@@ -519,7 +626,17 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks(&collector);
     release_camera_bench();
     current.reset();  // GPU objects and the EGL context go before static destruction and driver teardown
-    if (!collector.empty()) print_summary(collector);  // nothing ran: --benchmark_list_tests, a filter
+    if (collector.empty()) {  // nothing ran: --benchmark_list_tests, a filter
+        benchmark::Shutdown();
+        return 0;
+    }
+    print_summary(collector);
+    const Figures now = figures(collector);
+    const bool regressed = check_baseline(now, read_baseline(baseline_path), baseline_path);
+    if (update_baseline) {
+        if (!write_baseline(baseline_path, now)) std::fprintf(stderr, "puddle-bench: cannot write %s\n", baseline_path.c_str());
+        else std::printf("\nBaseline written: %s\n", baseline_path.c_str());
+    }
     benchmark::Shutdown();
-    return 0;
+    return regressed && !update_baseline ? 1 : 0;
 }

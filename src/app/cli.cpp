@@ -61,6 +61,11 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
                  "frame N on a screen is then the same picture as a headless render of N frames");
     cli.add_option("--camera", o.camera,
                    "Reflect a camera: a V4L2 device (/dev/video0) or mock:PATH (an image or a folder of images)");
+    cli.add_option("--stats", o.stats_every,
+                   "Log fps, frame-time percentiles (p50/p95/p99), CPU time per frame and resident memory every SECONDS (default 5)")
+        ->expected(0, 1)
+        ->default_str("5")
+        ->check(CLI::Range(0.1, 3600.0));
     cli.add_option("--gpio", o.gpio, "Knob backend: gpiod (the GPIO header), or mock:PATH to drive knobs from a script or FIFO");
     cli.add_option("--state", o.state_path, "Where knob changes are saved (default: $STATE_DIRECTORY/state.toml, else ~/.local/state/puddle/state.toml)");
     cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")

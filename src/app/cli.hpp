@@ -26,6 +26,7 @@ struct CliOptions {
     bool fixed_step = false;          // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
     std::string log_level = "info";
     std::string camera;               // --camera DEVICE|mock:PATH: environment.source = camera from that device
+    double stats_every = 0;           // --stats[=SECONDS]: log fps, frame-time percentiles, CPU and memory; 0: off
     std::string gpio = "gpiod";       // knob backend: gpiod, or mock:PATH (a script or FIFO of line changes)
     std::string state_path;           // knob state file; empty: $STATE_DIRECTORY, $XDG_STATE_HOME or ~/.local/state
 };

@@ -135,6 +135,14 @@ TEST(Cli, OtherOptions) {
     EXPECT_TRUE(parse_ok({"--fixed-step"}).fixed_step);
 }
 
+TEST(Cli, Stats) {
+    EXPECT_EQ(parse_ok({}).stats_every, 0.0);  // off
+    EXPECT_EQ(parse_ok({"--stats"}).stats_every, 5.0);
+    EXPECT_EQ(parse_ok({"--stats", "2"}).stats_every, 2.0);
+    EXPECT_EQ(parse_ok({"--stats", "--frames", "3"}).frames, 3L);
+    EXPECT_EQ(parse_error({"--stats", "0"}).code, ExitCode::Config);
+}
+
 TEST(Cli, HelpAndVersionExitWithOk) {
     testing::internal::CaptureStdout();
     auto help = parse({"--help"});

@@ -1,0 +1,154 @@
+// The steady-state frame loop allocates nothing (issue 7): global operator new/delete are replaced in
+// this executable by counting ones, and a few hundred headless frames after a warm-up must count zero.
+// The binary's own loop adds live tuning and the --stats ring buffer, so both run here too.
+//
+// Only C++ allocations are counted (operator new, which our code, the standard library, spdlog and fmt
+// go through); Mesa's own C allocations inside the GL driver are the driver's business.
+#include <gtest/gtest.h>
+
+#include <execinfo.h>
+
+#include <array>
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <string>
+
+#include "app/frame_stats.hpp"
+#include "support/gpu_fixture.hpp"
+#include "systems/live_tuning.hpp"
+
+namespace {
+
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+// The first few allocating call stacks, printed when the test fails.
+constexpr int max_traces = 6, max_depth = 24;
+std::array<std::array<void*, max_depth>, max_traces> traces{};
+std::array<int, max_traces> depths{};
+thread_local bool in_hook = false;
+
+void note_allocation() {
+    if (!counting.load(std::memory_order_relaxed) || in_hook) return;
+    const long n = allocations.fetch_add(1);
+    if (n < max_traces) {
+        in_hook = true;
+        depths[static_cast<std::size_t>(n)] = backtrace(traces[static_cast<std::size_t>(n)].data(), max_depth);
+        in_hook = false;
+    }
+}
+
+void* counted(std::size_t size, std::size_t align = 0) {
+    note_allocation();
+    void* p = nullptr;
+    if (align > alignof(std::max_align_t)) {
+        if (posix_memalign(&p, align, size ? size : 1) != 0) p = nullptr;
+    } else {
+        p = std::malloc(size ? size : 1);
+    }
+    return p;
+}
+
+}  // namespace
+
+void* operator new(std::size_t n) {
+    if (void* p = counted(n)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
+void* operator new(std::size_t n, std::align_val_t a) {
+    if (void* p = counted(n, static_cast<std::size_t>(a))) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+namespace puddle::test {
+namespace {
+
+// Counts operator new calls while alive.
+class AllocationCount {
+public:
+    AllocationCount() {
+        allocations = 0;
+        counting = true;
+    }
+    ~AllocationCount() { counting = false; }
+    long stop() {
+        counting = false;
+        return allocations.load();
+    }
+};
+
+void print_traces(long count) {
+    for (long i = 0; i < std::min<long>(count, max_traces); ++i) {
+        std::fprintf(stderr, "--- allocation %ld:\n", i + 1);
+        backtrace_symbols_fd(traces[static_cast<std::size_t>(i)].data(), depths[static_cast<std::size_t>(i)], 2);
+    }
+}
+
+constexpr int warm_up_frames = 30, counted_frames = 300;
+
+void expect_no_allocation_in_frames(app::Engine& engine, app::FrameStats& stats) {
+    void* probe[1];
+    backtrace(probe, 1);  // loads libgcc's unwinder now, not inside the hook
+    for (int n = 0; n < warm_up_frames; ++n) ASSERT_TRUE(engine.frame(1.0 / 60.0).ok());
+    AllocationCount count;
+    for (int n = 0; n < counted_frames; ++n) {
+        stats.tick();
+        ASSERT_TRUE(engine.frame(1.0 / 60.0).ok());
+        if (auto report = stats.take_report()) {
+            EXPECT_GT(report->frames, 0u);
+        }
+    }
+    const long allocated = count.stop();
+    if (allocated) print_traces(allocated);
+    EXPECT_EQ(allocated, 0) << "heap allocations in " << counted_frames << " steady-state frames (stacks on stderr)";
+}
+
+TEST(FrameAllocation, TheCounterSeesAllocations) {  // else a zero below would prove nothing
+    AllocationCount count;
+    auto text = std::make_unique<std::string>(100, 'x');
+    EXPECT_EQ(count.stop(), 2);
+}
+
+TEST(FrameAllocation, SteadyStateFramesAllocateNothing) {
+    auto engine = make_engine(params::Params{}, {160, 90});
+    ASSERT_TRUE(engine);
+    app::FrameStats stats(0.5);
+    expect_no_allocation_in_frames(*engine, stats);
+}
+
+TEST(FrameAllocation, SteadyStateFramesWithLiveTuningAllocateNothing) {
+    platform::DisplayOptions display;
+    display.backend = platform::BackendKind::Headless;
+    display.size = {160, 90};
+    auto engine = app::Engine::create(params::Params{}, display, {}, [](ecs::World& world, ecs::Schedule& schedule) {
+        systems::add_live_tuning(world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
+    });
+    ASSERT_TRUE(engine.ok()) << engine.error().message;
+    app::FrameStats stats(0.5);
+    expect_no_allocation_in_frames(**engine, stats);
+}
+
+TEST(FrameAllocation, StatsReportAllocatesNothing) {
+    app::FrameStats stats;
+    for (int n = 0; n < 500; ++n) stats.add(0.016 + 0.001 * (n % 7), 0.002, 0.001);
+    AllocationCount count;
+    const app::FrameStats::Summary s = stats.summary();
+    EXPECT_EQ(count.stop(), 0);
+    EXPECT_GT(s.p99_ms, s.p50_ms);
+}
+
+}  // namespace
+}  // namespace puddle::test
