@@ -1,5 +1,6 @@
 #include "app/check.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
@@ -9,6 +10,8 @@
 
 #include "app/cli.hpp"
 #include "app/version.hpp"
+#include "camera/format_negotiation.hpp"
+#include "camera/v4l2_io.hpp"
 #include "gpu/device.hpp"
 #include "io/gpio_backend.hpp"
 #include "params/config_loader.hpp"
@@ -141,7 +144,13 @@ int run_check(const CliOptions& o, const std::string& config_path) {
     for (const auto& e : std::filesystem::directory_iterator("/dev", ec))
         if (e.path().filename().string().starts_with("video")) videos.push_back(e.path().string());
     if (videos.empty()) r.absent("no /dev/video*: environment.source = \"camera\" would show the cubemap");
-    for (const auto& v : videos) r.ok(v);
+    std::sort(videos.begin(), videos.end());
+    for (const auto& v : videos) {
+        auto offer = camera::describe_device(camera::system_v4l2_io(), v);
+        if (offer) r.ok(fmt::format("{}: {}", v, *offer));
+        else if (offer.error().message.find("no capture formats") != std::string::npos) r.absent(offer.error().message);
+        else r.fix(offer.error().message);
+    }
 
     std::printf("\n%s\n", r.problems == 0 ? "Everything Puddle needs here is in order."
                                           : fmt::format("{} thing(s) to fix (FIX above).", r.problems).c_str());

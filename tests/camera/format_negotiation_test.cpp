@@ -34,6 +34,19 @@ TEST(FormatNegotiation, EnumeratesFormatsAndSizes) {
     dev.close(fd);
 }
 
+TEST(FormatNegotiation, DescribeDeviceListsTheOfferAndClosesTheDevice) {
+    FakeV4l2Device dev;
+    dev.formats = {{V4L2_PIX_FMT_NV12, {{320, 240}}}};
+    auto text = describe_device(dev, "/dev/video0");
+    ASSERT_TRUE(text) << text.error().message;
+    EXPECT_EQ(*text, "NV12 320x240");
+    EXPECT_EQ(dev.open_fds(), 0);
+    dev.unplug();
+    auto gone = describe_device(dev, "/dev/video0");
+    ASSERT_FALSE(gone);
+    EXPECT_NE(gone.error().message.find("/dev/video0: cannot open"), std::string::npos) << gone.error().message;
+}
+
 TEST(FormatNegotiation, FourccNames) {
     EXPECT_EQ(fourcc_name(V4L2_PIX_FMT_YUYV), "YUYV");
     EXPECT_EQ(fourcc_name(V4L2_PIX_FMT_NV12), "NV12");
