@@ -72,7 +72,7 @@ Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& 
                                                .height = face_size,
                                                .mip_levels = mip_count(face_size)});
     // Every level from the panorama itself, filtered as wide as its texels: RGBM texels cannot be averaged
-    // by glGenerateMipmap (a bright window next to a dark wall would lose most of its light).
+    // by the driver's mipmap generation (a bright window next to a dark wall would lose most of its light).
     for (int level = 0; level < cube.desc().mip_levels; ++level) {
         const int size = std::max(1, face_size >> level);
         for (int face = 0; face < 6; ++face) {

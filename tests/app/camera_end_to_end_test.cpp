@@ -12,23 +12,6 @@
 namespace puddle::test {
 namespace {
 
-struct Outcome {
-    int exit_code = -1;
-    std::string output;
-};
-
-Outcome run_puddle(const std::string& args) {
-    const std::string cmd = std::string(PUDDLE_BINARY) + " " + args + " 2>&1";
-    Outcome r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
 // Mean of one channel over a rectangle.
 double mean_channel(const assets::Image& img, int c, int x0, int y0, int x1, int y1) {
     double sum = 0;
@@ -58,7 +41,7 @@ TEST(CameraEndToEnd, MockCameraIsReflectedTheRightWayRound) {
     const std::string room = write_room(dir);
     const std::string with = (dir / "camera.png").string(), without = (dir / "sky.png").string();
     const std::string common = "-b headless --size 160x90 --frames 8 --seed 3 ";
-    const Outcome a = run_puddle(common + "--camera mock:" + room + " --screenshot " + with);
+    const CommandResult a = run_puddle(common + "--camera mock:" + room + " --screenshot " + with);
     ASSERT_EQ(a.exit_code, 0) << a.output;
     EXPECT_NE(a.output.find("camera: streaming mock:" + room), std::string::npos) << a.output;
     ASSERT_EQ(run_puddle(common + "--screenshot " + without).exit_code, 0);
@@ -99,7 +82,7 @@ TEST(CameraEndToEnd, BlendZeroLooksLikeTheCubemap) {
 }
 
 TEST(CameraEndToEnd, MissingMockImageExitsThree) {
-    const Outcome r = run_puddle("-b headless --frames 1 --camera mock:/nonexistent/room.png");
+    const CommandResult r = run_puddle("-b headless --frames 1 --camera mock:/nonexistent/room.png");
     EXPECT_EQ(r.exit_code, 3) << r.output;
     EXPECT_NE(r.output.find("/nonexistent/room.png"), std::string::npos) << r.output;
 }
@@ -107,7 +90,7 @@ TEST(CameraEndToEnd, MissingMockImageExitsThree) {
 TEST(CameraEndToEnd, NoCameraDeviceWarnsAndRendersTheCubemap) {
     TempDir dir;
     const std::string png = (dir / "out.png").string();
-    const Outcome r = run_puddle(
+    const CommandResult r = run_puddle(
         "-b headless --size 96x54 --frames 3 --camera /dev/puddle-no-such-camera --screenshot " + png);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(

@@ -12,40 +12,27 @@
 namespace puddle::test {
 namespace {
 
-struct Outcome {
-    int exit_code = -1;
-    std::string out;
-};
-
-Outcome check(const std::string& args) {
-    FILE* p = popen((std::string(PUDDLE_BINARY) + " --check " + args + " 2>&1").c_str(), "r");
-    Outcome o;
-    char buf[1024];
-    while (std::fgets(buf, sizeof buf, p)) o.out += buf;
-    const int status = pclose(p);
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return o;
-}
+CommandResult check(const std::string& args) { return run_puddle("--check " + args); }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(Check, ReportsEachAbsenceOnThisMachineAndExitsZero) {
-    const Outcome o = check("");
-    EXPECT_EQ(o.exit_code, 0) << o.out;
+    const CommandResult o = check("");
+    EXPECT_EQ(o.exit_code, 0) << o.output;
     for (const char* section : {"[config]", "[display: DRM/KMS", "[GPU: EGL and OpenGL ES]", "[GPIO knobs", "[cameras (V4L2)]"})
-        EXPECT_TRUE(has(o.out, section)) << section << "\n" << o.out;
-    EXPECT_TRUE(has(o.out, "OK    ")) << "the GPU line:\n" << o.out;
-    EXPECT_TRUE(has(o.out, "OpenGL ES 3")) << o.out;
-    if (!has(o.out, "/dev/dri/card")) {
-        EXPECT_TRUE(has(o.out, "--    no /dev/dri/card*")) << o.out;
+        EXPECT_TRUE(has(o.output, section)) << section << "\n" << o.output;
+    EXPECT_TRUE(has(o.output, "OK    ")) << "the GPU line:\n" << o.output;
+    EXPECT_TRUE(has(o.output, "OpenGL ES 3")) << o.output;
+    if (!has(o.output, "/dev/dri/card")) {
+        EXPECT_TRUE(has(o.output, "--    no /dev/dri/card*")) << o.output;
     }
-    if (!has(o.out, "gpiochip0 \"")) {
-        EXPECT_TRUE(has(o.out, "--    no GPIO chips")) << o.out;
+    if (!has(o.output, "gpiochip0 \"")) {
+        EXPECT_TRUE(has(o.output, "--    no GPIO chips")) << o.output;
     }
-    if (!has(o.out, "OK    /dev/video")) {
-        EXPECT_TRUE(has(o.out, "--    no /dev/video*")) << o.out;
+    if (!has(o.output, "OK    /dev/video")) {
+        EXPECT_TRUE(has(o.output, "--    no /dev/video*")) << o.output;
     }
-    EXPECT_FALSE(has(o.out, "info:")) << "the report is the output, not the log:\n" << o.out;
+    EXPECT_FALSE(has(o.output, "info:")) << "the report is the output, not the log:\n" << o.output;
 }
 
 TEST(Check, ChecksEachKnobAgainstTheGpioChips) {
@@ -63,20 +50,20 @@ chip = "gpiochip4"
 line = 3
 action = "save"
 )");
-    const Outcome o = check("--gpio mock: --config " + cfg);
-    EXPECT_EQ(o.exit_code, 0) << "hardware problems are reported, not fatal:\n" << o.out;
-    EXPECT_TRUE(has(o.out, "OK    gpiochip0 \"mock-gpio\", 64 lines")) << o.out;
-    EXPECT_TRUE(has(o.out, "OK    knob 1: encoder rain.intensity on gpiochip0 lines 17/18")) << o.out;
-    EXPECT_TRUE(has(o.out, "FIX   knob 2 (button save on gpiochip4 line 3): gpio: gpiochip4 line 3: no such chip")) << o.out;
-    EXPECT_TRUE(has(o.out, "1 thing(s) to fix")) << o.out;
+    const CommandResult o = check("--gpio mock: --config " + cfg);
+    EXPECT_EQ(o.exit_code, 0) << "hardware problems are reported, not fatal:\n" << o.output;
+    EXPECT_TRUE(has(o.output, "OK    gpiochip0 \"mock-gpio\", 64 lines")) << o.output;
+    EXPECT_TRUE(has(o.output, "OK    knob 1: encoder rain.intensity on gpiochip0 lines 17/18")) << o.output;
+    EXPECT_TRUE(has(o.output, "FIX   knob 2 (button save on gpiochip4 line 3): gpio: gpiochip4 line 3: no such chip")) << o.output;
+    EXPECT_TRUE(has(o.output, "1 thing(s) to fix")) << o.output;
 }
 
 TEST(Check, AnInvalidConfigIsExitCodeTwoWithFileLine) {
     TempDir dir;
     const std::string cfg = dir.write("bad.toml", "[rain]\ndrop_count = 999\n");
-    const Outcome o = check("--config " + cfg);
-    EXPECT_EQ(o.exit_code, 2) << o.out;
-    EXPECT_TRUE(has(o.out, "FIX   config: " + cfg + ":2: rain.drop_count = 999")) << o.out;
+    const CommandResult o = check("--config " + cfg);
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_TRUE(has(o.output, "FIX   config: " + cfg + ":2: rain.drop_count = 999")) << o.output;
 }
 
 }  // namespace

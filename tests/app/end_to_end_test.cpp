@@ -14,27 +14,10 @@
 namespace puddle::test {
 namespace {
 
-struct Outcome {
-    int exit_code = -1;
-    std::string output;  // stdout and stderr together
-};
-
-Outcome run_puddle(const std::string& args) {
-    const std::string cmd = std::string(PUDDLE_BINARY) + " " + args + " 2>&1";
-    Outcome r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
 TEST(EndToEnd, RendersAPngHeadlessAndExitsZero) {
     TempDir dir;
     const std::string png = (dir / "out.png").string();
-    const Outcome r = run_puddle("--backend headless --size 200x120 --frames 20 --screenshot " + png);
+    const CommandResult r = run_puddle("--backend headless --size 200x120 --frames 20 --screenshot " + png);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     auto image = assets::read_image(png);
     ASSERT_TRUE(image.ok()) << image.error().message;
@@ -57,7 +40,7 @@ TEST(EndToEnd, SameCommandLineGivesTheSameImage) {
 TEST(EndToEnd, BadConfigExitsTwoNamingFileLineAndRange) {
     TempDir dir;
     const std::string cfg = dir.write("bad.toml", "[rain]\ndrop_count = 10\nintensity = 9.5\n");
-    const Outcome r = run_puddle("-b headless --frames 1 --config " + cfg);
+    const CommandResult r = run_puddle("-b headless --frames 1 --config " + cfg);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find(cfg + ":3"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("rain.intensity"), std::string::npos) << r.output;
@@ -67,20 +50,20 @@ TEST(EndToEnd, BadConfigExitsTwoNamingFileLineAndRange) {
 TEST(EndToEnd, UnknownKeySuggestsTheNearestOne) {
     TempDir dir;
     const std::string cfg = dir.write("typo.toml", "[water]\nturbidty = 0.1\n");
-    const Outcome r = run_puddle("-b headless --frames 1 --config " + cfg);
+    const CommandResult r = run_puddle("-b headless --frames 1 --config " + cfg);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.output.find(cfg + ":2"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("did you mean 'water.turbidity'"), std::string::npos) << r.output;
 }
 
 TEST(EndToEnd, BadSetValueExitsTwo) {
-    const Outcome r = run_puddle("-b headless --frames 1 --set wave.damping=2");
+    const CommandResult r = run_puddle("-b headless --frames 1 --set wave.damping=2");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.output.find("wave.damping"), std::string::npos) << r.output;
 }
 
 TEST(EndToEnd, MissingImageExitsThreeNamingThePath) {
-    const Outcome r = run_puddle("-b headless --frames 1 --set ground.image=/nonexistent/paving.jpg");
+    const CommandResult r = run_puddle("-b headless --frames 1 --set ground.image=/nonexistent/paving.jpg");
     EXPECT_EQ(r.exit_code, 3) << r.output;
     EXPECT_NE(r.output.find("/nonexistent/paving.jpg"), std::string::npos) << r.output;
 }
@@ -90,12 +73,12 @@ TEST(EndToEnd, EnvironmentOfTheWrongShapeExitsThreeNamingPathAndShape) {
     const std::string wide = (dir / "wide.png").string(), cross = (dir / "cross.png").string();
     ASSERT_TRUE(assets::write_png(wide, assets::Image::make(300, 200)).ok());
     ASSERT_TRUE(assets::write_png(cross, assets::Image::make(1022, 768)).ok());
-    const Outcome panorama = run_puddle("-b headless --frames 1 --set environment.image=" + wide);
+    const CommandResult panorama = run_puddle("-b headless --frames 1 --set environment.image=" + wide);
     EXPECT_EQ(panorama.exit_code, 3) << panorama.output;
     EXPECT_NE(panorama.output.find(wide + " is 300x200: expected an equirectangular panorama twice as wide as high"),
               std::string::npos)
         << panorama.output;
-    const Outcome bad_cross = run_puddle("-b headless --frames 1 --set environment.image=" + cross);
+    const CommandResult bad_cross = run_puddle("-b headless --frames 1 --set environment.image=" + cross);
     EXPECT_EQ(bad_cross.exit_code, 3) << bad_cross.output;
     EXPECT_NE(bad_cross.output.find(cross + " is 1022x768: a horizontal cube cross must be 4 square faces wide"),
               std::string::npos)
@@ -103,11 +86,11 @@ TEST(EndToEnd, EnvironmentOfTheWrongShapeExitsThreeNamingPathAndShape) {
 }
 
 TEST(EndToEnd, HelpAndListParamsTeach) {
-    const Outcome help = run_puddle("--help");
+    const CommandResult help = run_puddle("--help");
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("--screenshot"), std::string::npos);
     EXPECT_NE(help.output.find("Exit codes"), std::string::npos);
-    const Outcome list = run_puddle("--list-params");
+    const CommandResult list = run_puddle("--list-params");
     EXPECT_EQ(list.exit_code, 0);
     EXPECT_NE(list.output.find("rain.drop_count"), std::string::npos);
     EXPECT_NE(list.output.find("water.turbidity"), std::string::npos);
@@ -120,7 +103,7 @@ double megabytes_after(const std::string& output, const std::string& key) {
 }
 
 TEST(EndToEnd, StatsLogsFpsPercentilesCpuAndPeakMemory) {
-    const Outcome r = run_puddle("-b headless --size 160x90 --frames 120 --stats 0.2");
+    const CommandResult r = run_puddle("-b headless --size 160x90 --frames 120 --stats 0.2");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     for (const char* part : {"stats: ", " fps over ", "p50 ", "p95 ", "p99 ", "CPU ms/frame ", "resident "})
         EXPECT_NE(r.output.find(part), std::string::npos) << part << " missing:\n" << r.output;
@@ -133,8 +116,8 @@ TEST(EndToEnd, StatsLogsFpsPercentilesCpuAndPeakMemory) {
 // itself adds for a 1080p frame is the part this test holds under 64 MB: the peak at 1920x1080 minus
 // the peak of the same run at 32x32. The absolute ceiling guards against a regression of the rest.
 TEST(EndToEnd, HeadlessFullHdRunAddsUnder64MegabytesResident) {
-    const Outcome big = run_puddle("-b headless --size 1920x1080 --frames 8 --stats");
-    const Outcome small = run_puddle("-b headless --size 32x32 --frames 8 --stats");
+    const CommandResult big = run_puddle("-b headless --size 1920x1080 --frames 8 --stats");
+    const CommandResult small = run_puddle("-b headless --size 32x32 --frames 8 --stats");
     ASSERT_EQ(big.exit_code, 0) << big.output;
     ASSERT_EQ(small.exit_code, 0) << small.output;
     const double peak = megabytes_after(big.output, "peak resident memory ");

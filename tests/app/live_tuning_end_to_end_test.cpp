@@ -28,18 +28,6 @@ std::string read_file(const std::filesystem::path& p) {
     return s.str();
 }
 
-int run_to_end(const std::string& args, std::string* output = nullptr) {
-    const std::string cmd = std::string(PUDDLE_BINARY) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return -1;
-    char buf[4096];
-    std::string out;
-    while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-    if (output) *output = out;
-    const int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 // The binary running in the background until stopped, its log in a file.
 class Running {
 public:
@@ -120,12 +108,13 @@ TEST(LiveTuningEndToEnd, TurningAKnobChangesTheParameterThePictureAndTheSavedSta
     const std::string turned = dir.write("turned.txt", turn_script(4));
     const std::string common = "-b headless --size 160x90 --frames 20 --seed 3 --config " + config;
 
-    std::string out;
-    ASSERT_EQ(run_to_end(common + " --gpio mock:" + still + " --state " + (dir / "s0.toml").string() +
-                             " --screenshot " + (dir / "still.png").string(), &out), 0) << out;
-    ASSERT_EQ(run_to_end(common + " --gpio mock:" + turned + " --state " + (dir / "s1.toml").string() +
-                             " --screenshot " + (dir / "turned.png").string(), &out), 0) << out;
-    EXPECT_NE(out.find("knob: look.vignette 0.5 -> 1.3 (knob)"), std::string::npos) << out;
+    const auto still_run = run_puddle(common + " --gpio mock:" + still + " --state " + (dir / "s0.toml").string() +
+                                      " --screenshot " + (dir / "still.png").string());
+    ASSERT_EQ(still_run.exit_code, 0) << still_run.output;
+    const auto turned_run = run_puddle(common + " --gpio mock:" + turned + " --state " + (dir / "s1.toml").string() +
+                                       " --screenshot " + (dir / "turned.png").string());
+    ASSERT_EQ(turned_run.exit_code, 0) << turned_run.output;
+    EXPECT_NE(turned_run.output.find("knob: look.vignette 0.5 -> 1.3 (knob)"), std::string::npos) << turned_run.output;
 
     auto a = assets::read_image((dir / "still.png").string());
     auto b = assets::read_image((dir / "turned.png").string());
@@ -139,8 +128,10 @@ TEST(LiveTuningEndToEnd, TurningAKnobChangesTheParameterThePictureAndTheSavedSta
     EXPECT_NE(state.find("[look]\nvignette = 1.3"), std::string::npos) << state;
 
     // The next start restores it.
-    ASSERT_EQ(run_to_end("--config " + config + " --state " + (dir / "s1.toml").string() + " --print-config", &out), 0);
-    EXPECT_NE(out.find("look.vignette              = 1.3                      # knob"), std::string::npos) << out;
+    const auto restored = run_puddle("--config " + config + " --state " + (dir / "s1.toml").string() + " --print-config");
+    ASSERT_EQ(restored.exit_code, 0);
+    EXPECT_NE(restored.output.find("look.vignette              = 1.3                      # knob"), std::string::npos)
+        << restored.output;
 }
 
 TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne) {
@@ -178,10 +169,10 @@ TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne)
 TEST(LiveTuningEndToEnd, AMissingGpioChipIsAWarningNotAFailure) {
     TempDir dir;
     const std::string config = dir.write("puddle.toml", std::string(knob_config) + "chip = \"gpiochip9\"\n");
-    std::string out;
-    ASSERT_EQ(run_to_end("-b headless --size 64x36 --frames 3 --gpio mock: --config " + config, &out), 0) << out;
-    EXPECT_NE(out.find("gpio: gpiochip9 line 17: no such chip or line"), std::string::npos) << out;
-    EXPECT_NE(out.find("retrying every 3 s"), std::string::npos) << out;
+    const auto r = run_puddle("-b headless --size 64x36 --frames 3 --gpio mock: --config " + config);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("gpio: gpiochip9 line 17: no such chip or line"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("retrying every 3 s"), std::string::npos) << r.output;
 }
 
 }  // namespace

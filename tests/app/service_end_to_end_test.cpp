@@ -30,7 +30,7 @@ TEST(ServiceEndToEnd, NotifiesReadyPingsTheWatchdogAndSaysStopping) {
 
     // A 20 ms watchdog: pings at least every 10 ms of frames; 60 frames take longer than that.
     const std::string cmd = "NOTIFY_SOCKET=" + path + " WATCHDOG_USEC=20000 " + PUDDLE_BINARY +
-                            " -b headless --size 64x36 --frames 60 2>&1";
+                            " -b headless --size 64x36 --frames 60";
     // Read the socket while the binary runs, as systemd does (its queue holds only a few datagrams).
     std::vector<std::string> got;
     std::atomic<bool> done{false};
@@ -43,15 +43,12 @@ TEST(ServiceEndToEnd, NotifiesReadyPingsTheWatchdogAndSaysStopping) {
         }
         for (ssize_t n; (n = ::recv(fd, msg, sizeof msg, 0)) > 0;) got.emplace_back(msg, static_cast<std::size_t>(n));
     });
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    const int status = pclose(p);
+    const CommandResult run = run_command(cmd);
     done = true;
     listener.join();
     ::close(fd);
-    ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+    const std::string& out = run.output;
+    ASSERT_EQ(run.exit_code, 0) << out;
     ASSERT_GE(got.size(), 3u) << out;
     EXPECT_EQ(got.front().rfind("READY=1", 0), 0u) << got.front();
     EXPECT_EQ(got.back(), "STOPPING=1");

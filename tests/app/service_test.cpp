@@ -184,13 +184,10 @@ TEST(Deploy, SystemdAcceptsTheUnit) {
                             "TTYPath=/dev/tty"})
         EXPECT_NE(text.find(key), std::string::npos) << key;
     const std::string path = dir.write("puddle.service", text);
-    const std::string cmd = "systemd-analyze verify " + path + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    EXPECT_EQ(pclose(p), 0) << out;
-    EXPECT_EQ(out.find("puddle.service"), std::string::npos) << "no complaint about the unit:\n" << out;
+    const auto verify = test::run_command("systemd-analyze verify " + path);
+    EXPECT_EQ(verify.exit_code, 0) << verify.output;
+    EXPECT_EQ(verify.output.find("puddle.service"), std::string::npos) << "no complaint about the unit:\n"
+                                                                       << verify.output;
 }
 
 TEST(Deploy, SysusersCreatesTheUserInItsGroups) {

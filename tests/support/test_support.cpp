@@ -1,6 +1,9 @@
 #include "support/test_support.hpp"
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <random>
 
@@ -75,6 +78,19 @@ double luma_stddev(const assets::Image& img, int x0, int y0, int x1, int y1) {
         for (int x = x0; x < x1; ++x) sq += (luma_at(img, x, y) - mean) * (luma_at(img, x, y) - mean);
     return std::sqrt(sq / double((x1 - x0) * (y1 - y0)));
 }
+
+CommandResult run_command(const std::string& command) {
+    CommandResult r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    char buf[4096];
+    while (std::fgets(buf, sizeof buf, pipe)) r.output += buf;
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+CommandResult run_puddle(const std::string& args) { return run_command(std::string(PUDDLE_BINARY) + " " + args); }
 
 std::filesystem::path output_dir() {
     const auto p = std::filesystem::current_path() / "test-output";

@@ -39,6 +39,15 @@ double mean_luma(const assets::Image& img);
 // Standard deviation of luma over a rectangle: a measure of contrast.
 double luma_stddev(const assets::Image& img, int x0, int y0, int x1, int y1);
 
+// A shell command run to its end: stdout and stderr together, and its exit code (-1 when it did not exit).
+struct CommandResult {
+    int exit_code = -1;
+    std::string output;
+};
+CommandResult run_command(const std::string& command);
+// The puddle binary under test, run with these arguments.
+CommandResult run_puddle(const std::string& args);
+
 // Where tests write pictures worth looking at when they fail (build/test-output).
 std::filesystem::path output_dir();
 
