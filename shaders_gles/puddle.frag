@@ -3,10 +3,16 @@
 // the camera; Fresnel-Schlick between a rotated environment reflection and the ground refracted through
 // murky water; then fog, vignette, tone mapping and sRGB encoding.
 //
-// Two ways to find where a view ray meets the water, chosen by #define:
+// Choices that are the same for every pixel are #defines, set by the render system from the parameters
+// (systems/puddle_variant.hpp), so no pixel pays for a branch it never takes: a GPU runs both sides of a
+// branch its neighbours disagree on, and llvmpipe runs both sides of every branch.
 //   METHOD_RAYMARCH: the reference's sphere-trace of the displaced box (render.march_steps reads);
-//   otherwise:       meet the flat top analytically, then refine twice against the height (2 reads).
-// The displacement is tiny next to the box, so both find the same point (a test compares the pictures).
+//                    otherwise meet the flat top analytically and refine once (1 read).
+//   GROUND_IMAGE:    the ground is u_ground (an image or the procedural paving); otherwise the checkerboard.
+//   GROUND_HIDDEN:   turbidity is so high that no ground can show through: no refraction at all.
+//   ENV_RGBM:        the cube holds RGBM texels (no half-float render targets).
+//   TONEMAP:         the look.tonemap operator, a TONEMAP_* constant of colour.glsl.
+// The displacement is tiny next to the box, so both methods find the same point (a test compares the pictures).
 precision highp float;
 
 #include "surface_encoding.glsl"
@@ -16,18 +22,18 @@ in vec2 v_uv;
 out vec4 o_color;
 
 uniform sampler2D u_surface;   // height, hL - hR, hD - hU (surface.frag)
-uniform samplerCube u_env;     // linear radiance: sRGB8 decoded by the sampler, half float, or RGBM (u_env_rgbm)
+uniform samplerCube u_env;     // linear radiance: sRGB8 decoded by the sampler, half float, or RGBM
 uniform sampler2D u_ground;    // sRGB: sampled as linear
 
-// Camera, computed once per frame on the CPU.
+// Camera and everything else uniform across the screen, computed once per frame on the CPU.
 uniform vec3 u_camera_position;
 uniform vec3 u_cam_forward;
 uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;
 uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1)
 uniform mat3 u_env_matrix;     // rotation about +Y by environment.rotation
-uniform bool u_env_rgbm;       // the cube holds RGBM texels (no half-float render targets)
 uniform float u_env_scale;     // 2^environment.exposure
+uniform vec2 u_slope_scale;    // world slope of the height per unit of (hR - hL, hU - hD): res / (2 size.xz)
 
 // Parameters, named after the registry (params.def).
 uniform vec3 u_puddle_size;
@@ -37,12 +43,10 @@ uniform float u_water_normal_strength;
 uniform float u_water_reflectivity;
 uniform float u_water_turbidity;
 uniform vec3 u_water_tint;
-uniform bool u_ground_checkerboard;
 uniform float u_ground_scale;
 uniform float u_look_fog_density;
 uniform float u_look_vignette;
 uniform int u_render_march_steps;
-uniform int u_look_tonemap;    // index into look.tonemap's choices: TONEMAP_* in colour.glsl
 
 const float IOR = 1.333;
 
@@ -52,14 +56,20 @@ vec3 surface_at(vec2 xz) {
 }
 
 float top() { return 0.5 * u_puddle_size.y; }
-float water_height(vec2 xz) { return top() + surface_at(xz).r * u_wave_height_scale; }
 
 vec3 environment(vec3 dir) {
     vec4 texel = texture(u_env, u_env_matrix * dir);
-    return (u_env_rgbm ? decode_rgbm(texel) : texel.rgb) * u_env_scale;
+#ifdef ENV_RGBM
+    return decode_rgbm(texel) * u_env_scale;
+#else
+    return texel.rgb * u_env_scale;
+#endif
 }
 
-// Slab intersection with the axis-aligned box of half size h, widened upward by the largest displacement.
+#ifdef METHOD_RAYMARCH
+float water_height(vec2 xz) { return top() + surface_at(xz).r * u_wave_height_scale; }
+
+// Slab intersection with the axis-aligned box of half size h.
 bool enter_box(vec3 o, vec3 d, vec3 h, out float t_near) {
     vec3 inv = 1.0 / d;
     vec3 t0 = (-h - o) * inv, t1 = (h - o) * inv;
@@ -69,7 +79,6 @@ bool enter_box(vec3 o, vec3 d, vec3 h, out float t_near) {
     return t_near <= t_far;
 }
 
-#ifdef METHOD_RAYMARCH
 // Distance to the box whose top face is displaced by the water height (a bound, as sphere tracing needs).
 float water_sdf(vec3 p) {
     vec3 h = 0.5 * u_puddle_size;
@@ -80,7 +89,7 @@ float water_sdf(vec3 p) {
 
 bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
     float t;
-    vec3 bound = 0.5 * u_puddle_size + vec3(0.0, 4.0 * u_wave_height_scale, 0.0);
+    vec3 bound = 0.5 * u_puddle_size + vec3(0.0, 4.0 * u_wave_height_scale, 0.0);  // widened by the displacement
     if (!enter_box(o, d, bound, t)) return false;
     for (int i = 0; i < 64; ++i) {
         if (i >= u_render_march_steps) break;
@@ -93,22 +102,24 @@ bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
     return water_sdf(p) < 0.05;
 }
 #else
+// Meet the flat top, read the surface there once, and step to where the plane through that texel's
+// height, tilted by its slopes, meets the ray (one Newton step on the height; the displacement is a
+// fraction of a unit, so one step lands on it). The same texel gives the normal.
 bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
-    if (d.y >= 0.0) return false;
-    float t = (top() - o.y) / d.y;
-    p = o + t * d;
-    if (any(greaterThan(abs(p.xz), 0.5 * u_puddle_size.xz))) return false;
-    // The top is displaced by a fraction of a unit: two fixed-point steps land on it. The second step's
-    // texel, read a hair from where it lands, also gives the slopes: one surface read fewer per pixel.
-    for (int i = 0; i < 2; ++i) {
-        s = surface_at(p.xz);
-        t = (top() + s.r * u_wave_height_scale - o.y) / d.y;
-        p = o + t * d;
-    }
-    return true;
+    float down = min(d.y, -1e-4);
+    p = o + ((top() - o.y) / down) * d;
+    bool inside = d.y < 0.0 && all(lessThanEqual(abs(p.xz), 0.5 * u_puddle_size.xz));
+    s = surface_at(p.xz);
+    vec2 slope = -s.gb * u_slope_scale * u_wave_height_scale;  // d(height)/dx, d(height)/dz in world units
+    float closing = min(down - dot(slope, d.xz), 0.5 * down);  // how fast the ray meets the tilted plane
+    p += (s.r * u_wave_height_scale / closing) * d;
+    return inside;
 }
 #endif
 
+#ifdef GROUND_IMAGE
+vec3 ground_colour(vec2 xz) { return texture(u_ground, xz * u_ground_scale).rgb * 0.6; }
+#else
 float hash12(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
     p3 += dot(p3, p3.yzx + 33.33);
@@ -116,14 +127,26 @@ float hash12(vec2 p) {
 }
 
 vec3 ground_colour(vec2 xz) {
-    vec2 g = xz * u_ground_scale;
-    if (u_ground_checkerboard) {
-        vec2 tile = floor(g);
-        bool light = mod(tile.x + tile.y, 2.0) > 0.5;
-        vec3 c = light ? vec3(0.25, 0.22, 0.20) : vec3(0.15, 0.12, 0.10);
-        return c + (hash12(floor(xz * 16.0)) - 0.5) * 0.05;  // +-0.025 grain
-    }
-    return texture(u_ground, g).rgb * 0.6;
+    vec2 tile = floor(xz * u_ground_scale);
+    float light = mod(tile.x + tile.y, 2.0);  // 0 or 1
+    vec3 c = mix(vec3(0.15, 0.12, 0.10), vec3(0.25, 0.22, 0.20), light);
+    return c + (hash12(floor(xz * 16.0)) - 0.5) * 0.05;  // +-0.025 grain
+}
+#endif
+
+// What the water shows of the ground at p: refracted, fading into the tint with the path through the water
+// (Beer's law), then filtered by the water.
+vec3 seen_ground(vec3 p, vec3 d, vec3 n) {
+    vec3 filter_ = 0.7 * (1.0 - 0.5 * u_water_tint);
+#ifdef GROUND_HIDDEN
+    return u_water_tint * filter_;  // what the mix below gives once visibility is nil
+#else
+    vec3 t = refract(d, n, 1.0 / IOR);
+    if (t.y >= 0.0) return 0.3 * u_water_tint;  // a ray bent upward never meets the ground
+    float along = (-u_puddle_depth - p.y) / t.y;  // distance through the water
+    vec3 ground = mix(u_water_tint, ground_colour(p.xz + along * t.xz), exp(-along * u_water_turbidity));
+    return ground * filter_;
+#endif
 }
 
 void main() {
@@ -131,9 +154,22 @@ void main() {
     vec3 o = u_camera_position;
     vec3 d = normalize(u_cam_forward + ndc.x * u_cam_scale.x * u_cam_right + ndc.y * u_cam_scale.y * u_cam_up);
 
-    vec3 colour;
+    // The sky is read once per pixel, along the reflected ray on the water and the view ray beyond it:
+    // the water's own light is added before, and fog scales both after.
+    vec3 look = d;           // where the sky is read
+    float sky_share = 1.0;   // how much of it shows
+    vec3 own = vec3(0.0);    // the water's own light: ground and tint
+    float fog_keep = 1.0;    // the sky beyond the puddle is at infinity, unfogged
     vec3 p, s;
-    if (hit_water(o, d, p, s)) {
+    bool water = hit_water(o, d, p, s);
+    // A pixel that misses still runs the water's code where the GPU masks instead of branching (llvmpipe
+    // always; a GPU where neighbouring pixels disagree): give it a harmless point on the water, or its
+    // ground read at an unbounded place costs a thousand times a normal one (measured on llvmpipe).
+    if (!water) {
+        p = vec3(0.0, top(), 0.0);
+        s = vec3(0.0);
+    }
+    if (water) {
         vec3 n = normalize(vec3(s.g * u_water_normal_strength, 1.0, s.b * u_water_normal_strength));
 
         const float f0 = ((1.0 - IOR) / (1.0 + IOR)) * ((1.0 - IOR) / (1.0 + IOR));
@@ -141,30 +177,15 @@ void main() {
         float x2 = x * x;
         float fresnel = f0 + (1.0 - f0) * (x2 * x2 * x);  // Schlick's (1 - cos)^5 without pow
 
-        vec3 reflection = environment(reflect(d, n));
-
-        vec3 ground;
-        vec3 t = refract(d, n, 1.0 / IOR);
-        if (t.y < 0.0) {
-            float along = (-u_puddle_depth - p.y) / t.y;  // distance through the water
-            ground = ground_colour(p.xz + along * t.xz);
-            float visibility = exp(-along * u_water_turbidity);
-            ground = mix(u_water_tint, ground, visibility);
-            ground *= 0.7 * (1.0 - 0.5 * u_water_tint);
-        } else {
-            ground = 0.3 * u_water_tint;
-        }
-
+        // mix(ground, reflection, w), with w = F * (m - 0.3) + 0.3 and m = mix(0.3, 0.8, reflectivity)
         float m = mix(0.3, 0.8, u_water_reflectivity);
-        colour = mix(ground, reflection, fresnel * (m - 0.3) + 0.3);
-        colour += 0.15 * u_water_tint * (1.0 - fresnel);
-
-        float fog = exp(-distance(o, p) * u_look_fog_density);
-        colour = mix(0.7 * colour, colour, fog);
-    } else {
-        colour = environment(d);  // the sky beyond the puddle: at infinity, unfogged
+        sky_share = fresnel * (m - 0.3) + 0.3;
+        look = reflect(d, n);
+        own = seen_ground(p, d, n) * (1.0 - sky_share) + 0.15 * u_water_tint * (1.0 - fresnel);
+        fog_keep = mix(0.7, 1.0, exp(-distance(o, p) * u_look_fog_density));
     }
+    vec3 colour = (own + sky_share * environment(look)) * fog_keep;
 
     colour *= 1.0 - u_look_vignette * length(v_uv - 0.5);
-    o_color = vec4(encode_srgb(tonemap(colour, u_look_tonemap)), 1.0);
+    o_color = vec4(encode_srgb(tonemap(colour, TONEMAP)), 1.0);
 }

@@ -95,7 +95,9 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     world.insert_resource<WaveField>();
     world.insert_resource<Surface>();
     if (auto r = build_field_and_surface(world); !r) return r;
-    if (auto r = build_puddle_renderer(device, world.resource<Surface>(), world.insert_resource<PuddleRenderer>()); !r)
+    if (auto r = build_puddle_renderer(device, world.resource<Surface>(), env, params,
+                                       world.insert_resource<PuddleRenderer>());
+        !r)
         return r;
     world.insert_resource<AnalyticRipples>();
     world.insert_resource<GridDrops>();

@@ -6,36 +6,50 @@
 #include <glm/mat3x3.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <spdlog/spdlog.h>
+
 #include "systems/param_uniforms.hpp"
 
 namespace puddle::systems {
 
 using params::ParamId;
 
-Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, PuddleRenderer& renderer) {
-    std::vector<std::string> defines;
-    if (surface.unorm) defines.emplace_back("SURFACE_UNORM");
-    auto intersect = device.create_pipeline({.label = "puddle (intersect)",
-                                             .fragment = "puddle.frag",
-                                             .defines = defines,
-                                             .textures = {"u_surface", "u_env", "u_ground"}});
-    if (!intersect) return intersect.error();
-    defines.emplace_back("METHOD_RAYMARCH");
-    auto raymarch = device.create_pipeline({.label = "puddle (raymarch)",
-                                            .fragment = "puddle.frag",
-                                            .defines = defines,
-                                            .textures = {"u_surface", "u_env", "u_ground"}});
-    if (!raymarch) return raymarch.error();
-    renderer.intersect = std::move(intersect).value();
-    renderer.raymarch = std::move(raymarch).value();
-    return {};
+namespace {
+
+gpu::PipelineDesc puddle_desc(const PuddleVariant& v, bool surface_unorm) {
+    return {.label = "puddle",
+            .fragment = "puddle.frag",
+            .defines = variant_defines(v, surface_unorm),
+            .textures = {"u_surface", "u_env", "u_ground"}};
+}
+
+}  // namespace
+
+const gpu::Pipeline* PuddleRenderer::pipeline(gpu::Device& device, const PuddleVariant& v) {
+    LazyPipeline& slot = variants[variant_index(v)];
+    const bool built = slot.ready();
+    if (!slot.ensure_or_log(device, [&] { return puddle_desc(v, surface_unorm); })) return nullptr;
+    if (!built) spdlog::debug("render: compiled the puddle shader for {}", describe(v));
+    return &slot.pipeline;
+}
+
+Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
+                                   const params::Params& params, PuddleRenderer& renderer) {
+    renderer = PuddleRenderer{};
+    renderer.surface_unorm = surface.unorm;
+    const PuddleVariant v = choose_puddle_variant(params, env.rgbm);
+    return renderer.variants[variant_index(v)].ensure(device, [&] { return puddle_desc(v, surface.unorm); });
 }
 
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
-                   const Environment& env, const Ground& ground, const PuddleRenderer& renderer,
-                   const RenderTarget& target, const gpu::Texture* environment_override) {
+                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
+                   const RenderTarget& target, const gpu::Texture* environment_override,
+                   const PuddleVariant* variant) {
     const gpu::FrameTarget& frame = target.target;
-    const bool raymarch = params.s(ParamId::render_method) == "raymarch";
+    const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
+    const gpu::Pipeline* pipeline =
+        renderer.pipeline(device, variant ? *variant : choose_puddle_variant(params, rgbm));
+    if (!pipeline) return;
 
     // Everything uniform across the screen is worked out here once, not per pixel.
     const glm::vec3 eye = params.v3(ParamId::camera_position);
@@ -51,7 +65,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
 
     auto pass = device.begin_pass({.label = "puddle", .target = frame, .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(raymarch ? renderer.raymarch : renderer.intersect)
+    pass.set_pipeline(*pipeline)
         .set_texture(0, surface.texture, surface.sampler)
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
@@ -61,8 +75,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_up", up)
         .set("u_cam_scale", glm::vec2(tan_half * aspect, tan_half))
         .set("u_env_matrix", env_matrix)
-        .set("u_env_rgbm", env.rgbm && !environment_override ? 1 : 0)  // the camera cube is sRGB8
-        .set("u_env_scale", std::exp2(params.f(ParamId::environment_exposure)));
+        .set("u_env_scale", std::exp2(params.f(ParamId::environment_exposure)))
+        .set("u_slope_scale", static_cast<float>(surface.resolution) * 0.5f /
+                                  glm::vec2(params.v3(ParamId::puddle_size).x, params.v3(ParamId::puddle_size).z));
     pass.draw_fullscreen();
 }
 

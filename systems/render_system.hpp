@@ -2,9 +2,13 @@
 // The puddle render pass: draws the scene for the camera into the frame target (REFERENCE.md §1).
 // environment_override: a cube sampled in place of env.cube (the camera environment while it streams).
 
+#include <array>
+
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
 #include "systems/environment_system.hpp"
+#include "systems/lazy_pipeline.hpp"
+#include "systems/puddle_variant.hpp"
 #include "systems/surface_system.hpp"
 #include "util/result.hpp"
 
@@ -15,16 +19,24 @@ struct RenderTarget {
     gpu::FrameTarget target;
 };
 
-// Resource: one pipeline per render.method.
+// Resource: the puddle shader's variants (systems/puddle_variant.hpp), each compiled on first use and
+// kept, so a knob that flips between two looks compiles each once.
 struct PuddleRenderer {
-    gpu::Pipeline intersect;
-    gpu::Pipeline raymarch;
+    std::array<LazyPipeline, puddle_variant_count> variants;
+    bool surface_unorm = false;
+
+    // The pipeline for `v`, compiled now if it is new; null (logged once) when it fails to compile.
+    const gpu::Pipeline* pipeline(gpu::Device& device, const PuddleVariant& v);
 };
 
-Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, PuddleRenderer& renderer);
+// Compiles the variant these parameters select, so a shader that does not build stops start-up.
+Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
+                                   const params::Params& params, PuddleRenderer& renderer);
 
+// `variant` forces one (tests compare variants); by default the parameters choose.
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
-                   const Environment& env, const Ground& ground, const PuddleRenderer& renderer,
-                   const RenderTarget& target, const gpu::Texture* environment_override = nullptr);
+                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
+                   const RenderTarget& target, const gpu::Texture* environment_override = nullptr,
+                   const PuddleVariant* variant = nullptr);
 
 }  // namespace puddle::systems

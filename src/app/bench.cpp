@@ -483,10 +483,11 @@ void print_camera_summary(const Collector& c) {
 }
 
 // The render shader's estimated per-pixel cost for one method, with the default march steps.
+// The variant the default parameters select (systems/puddle_variant.hpp), with the method given.
 gpu::ShaderCost shader_cost(const char* method) {
-    std::vector<std::string> defines;
-    if (std::string(method) == "raymarch") defines.emplace_back("METHOD_RAYMARCH");
-    auto shader = gpu::assemble_shader("puddle.frag", defines);
+    systems::PuddleVariant v = systems::choose_puddle_variant(Params{}, false);
+    v.raymarch = std::string(method) == "raymarch";
+    auto shader = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
     if (!shader) return {};
     return gpu::estimate_shader_cost(shader->source, Params{}.i(ParamId::render_march_steps));
 }

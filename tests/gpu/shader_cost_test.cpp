@@ -7,6 +7,8 @@
 
 #include "gpu/shader_cost.hpp"
 #include "gpu/shader_source.hpp"
+#include "params/param_store.hpp"
+#include "systems/puddle_variant.hpp"
 
 namespace puddle::gpu {
 namespace {
@@ -50,15 +52,32 @@ TEST(ShaderCost, FollowsTheVariantsDefines) {
     EXPECT_EQ(estimate_shader_cost(source).texture_fetches, 1);
 }
 
+// The variant the default parameters select: checkerboard ground, no RGBM, the soft tone curve.
 TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
-    auto intersect = assemble_shader("puddle.frag", {});
-    const std::vector<std::string> raymarch_defines{"METHOD_RAYMARCH"};
-    auto raymarch = assemble_shader("puddle.frag", raymarch_defines);
+    systems::PuddleVariant v = systems::choose_puddle_variant(params::Params{}, false);
+    auto intersect = assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    v.raymarch = true;
+    auto raymarch = assemble_shader("puddle.frag", systems::variant_defines(v, false));
     ASSERT_TRUE(intersect.ok() && raymarch.ok());
     const ShaderCost i = estimate_shader_cost(intersect->source, 14), r = estimate_shader_cost(raymarch->source, 14);
-    EXPECT_GE(i.texture_fetches, 4);  // surface at least three times, environment, ground
-    EXPECT_GT(r.texture_fetches, i.texture_fetches);
+    EXPECT_EQ(i.texture_fetches, 2);  // the surface once, the sky once (reflected or direct)
+    EXPECT_GT(r.texture_fetches, 14);  // a surface read per march step
     EXPECT_GT(r.alu_ops, i.alu_ops);
+}
+
+// The image ground costs a fetch the checkerboard does not; a hidden ground costs neither.
+TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
+    systems::PuddleVariant v = systems::choose_puddle_variant(params::Params{}, false);
+    const auto cost = [&](systems::GroundKind g) {
+        v.ground = g;
+        auto s = assemble_shader("puddle.frag", systems::variant_defines(v, false));
+        return s ? estimate_shader_cost(s->source, 14) : ShaderCost{};
+    };
+    const ShaderCost checker = cost(systems::GroundKind::Checkerboard), image = cost(systems::GroundKind::Image),
+                     hidden = cost(systems::GroundKind::Hidden);
+    EXPECT_EQ(image.texture_fetches, checker.texture_fetches + 1);
+    EXPECT_EQ(hidden.texture_fetches, checker.texture_fetches);
+    EXPECT_LT(hidden.alu_ops, checker.alu_ops);
 }
 
 }  // namespace

@@ -1,0 +1,72 @@
+// The puddle shader's variants on the GPU: every one compiles, and skipping the refraction where
+// turbidity hides the ground changes the picture by at most one 8-bit level.
+#include <gtest/gtest.h>
+
+#include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
+#include "systems/render_system.hpp"
+
+namespace puddle::test {
+namespace {
+
+using systems::GroundKind;
+using systems::PuddleVariant;
+
+TEST(PuddleVariants, EveryVariantCompiles) {
+    auto engine = make_engine(make_params({}), {64, 36});
+    ASSERT_TRUE(engine);
+    auto& renderer = engine->world().resource<systems::PuddleRenderer>();
+    gpu::Device& device = engine->device();
+    for (bool raymarch : {false, true})
+        for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
+            for (bool rgbm : {false, true})
+                for (int t = 0; t < static_cast<int>(systems::tonemap_count); ++t) {
+                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm, .tonemap = t};
+                    EXPECT_NE(renderer.pipeline(device, v), nullptr) << systems::describe(v);
+                }
+}
+
+// Renders `frames` frames with the variant the parameters choose, then the same frame again with `forced`.
+struct TwoPictures {
+    assets::Image chosen, forced;
+    PuddleVariant chosen_variant;
+};
+
+TwoPictures render_both(std::initializer_list<std::string> sets, GroundKind forced_ground) {
+    TwoPictures out;
+    auto engine = make_engine(make_params(sets), {160, 90});
+    if (!engine) return out;
+    out.chosen = render_frames(*engine, 30);
+    ecs::World& w = engine->world();
+    const auto& params = w.resource<params::Params>();
+    const auto& env = w.resource<systems::Environment>();
+    out.chosen_variant = systems::choose_puddle_variant(params, env.rgbm);
+    PuddleVariant forced = out.chosen_variant;
+    forced.ground = forced_ground;
+    systems::render_system(engine->device(), params, w.resource<systems::Surface>(), env,
+                           w.resource<systems::Ground>(), w.resource<systems::PuddleRenderer>(),
+                           w.resource<systems::RenderTarget>(), nullptr, &forced);
+    out.forced = engine->read_frame();
+    return out;
+}
+
+TEST(PuddleVariants, HiddenGroundLooksLikeTheFullRefraction) {
+    // Turbidity 1.2 over the default 4-unit depth: at most 0.6 * e^-8.9 of the ground shows.
+    const TwoPictures p = render_both({"water.turbidity=1.2", "ground.checkerboard=false"}, GroundKind::Image);
+    ASSERT_FALSE(p.chosen.empty());
+    EXPECT_EQ(p.chosen_variant.ground, GroundKind::Hidden);
+    const ImageDiff d = compare_images(p.chosen, p.forced, 1);
+    EXPECT_LE(d.max_channel_diff, 1);
+    EXPECT_LT(d.mean_abs_diff, 0.05);
+}
+
+// The comparison above can fail: where the ground does show, leaving it out changes the picture.
+TEST(PuddleVariants, HidingAVisibleGroundChangesThePicture) {
+    const TwoPictures p = render_both({"water.turbidity=0.05", "ground.checkerboard=false"}, GroundKind::Hidden);
+    ASSERT_FALSE(p.chosen.empty());
+    EXPECT_EQ(p.chosen_variant.ground, GroundKind::Image);
+    EXPECT_GT(compare_images(p.chosen, p.forced, 4).fraction_over, 0.2);
+}
+
+}  // namespace
+}  // namespace puddle::test
