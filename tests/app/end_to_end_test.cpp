@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include <sys/wait.h>
@@ -66,6 +67,52 @@ TEST(EndToEnd, MissingImageExitsThreeNamingThePath) {
     const CommandResult r = run_puddle("-b headless --frames 1 --set ground.image=/nonexistent/paving.jpg");
     EXPECT_EQ(r.exit_code, 3) << r.output;
     EXPECT_NE(r.output.find("/nonexistent/paving.jpg"), std::string::npos) << r.output;
+}
+
+// Images are read by libpuddle-images.so (OpenImageIO), loaded on first use. When it cannot be loaded the
+// read fails like any unreadable image: exit code 3 and one line naming the module and dlerror()'s reason.
+TEST(EndToEnd, ImageModuleThatCannotLoadExitsThreeNamingItAndWhy) {
+    TempDir dir;
+    const std::string png = (dir / "ground.png").string();
+    ASSERT_TRUE(assets::write_png(png, assets::Image::make(8, 8)).ok());
+    const std::string not_elf = dir.write("libpuddle-images.so", "not a shared object\n");
+    const std::string args =
+        " -b headless --size 32x32 --frames 1 --set ground.checkerboard=false --set ground.image=" + png;
+
+    const std::string missing = (dir / "missing" / "libpuddle-images.so").string();
+    const CommandResult r = run_command("PUDDLE_IMAGE_MODULE=" + missing + " " + PUDDLE_BINARY + args);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    const std::string line = "image: " + png + ": cannot read: image module " + missing +
+                             ": cannot open shared object file: No such file or directory";
+    EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
+
+    const CommandResult bad = run_command("PUDDLE_IMAGE_MODULE=" + not_elf + " " + PUDDLE_BINARY + args);
+    EXPECT_EQ(bad.exit_code, 3) << bad.output;
+    EXPECT_NE(bad.output.find("cannot read: image module " + not_elf + ": "), std::string::npos)
+        << bad.output;
+
+    const CommandResult found = run_puddle(args);  // the control: the build tree's module reads it
+    EXPECT_EQ(found.exit_code, 0) << found.output;
+}
+
+// OpenImageIO's Debian package maps about 140 MB of libraries; a run that reads no image file, screenshot
+// included (libpng writes it), must not load it. glibc's loader lists every library it loads, dlopen()ed
+// ones too, under LD_DEBUG=files; the run with a ground image shows the check would see it.
+TEST(EndToEnd, RunWithoutImageFilesNeverLoadsOpenImageIO) {
+    TempDir dir;
+    const std::string shot = (dir / "shot.png").string();
+    const std::string run =
+        std::string("LD_DEBUG=files ") + PUDDLE_BINARY + " -b headless --size 32x32 --frames 2";
+    const CommandResult plain = run_command(run + " --screenshot " + shot);
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    EXPECT_TRUE(std::filesystem::exists(shot));
+    EXPECT_NE(plain.output.find("file=libEGL"), std::string::npos) << "LD_DEBUG lists libraries:\n" << plain.output;
+    EXPECT_EQ(plain.output.find("libpuddle-images"), std::string::npos) << plain.output;
+    EXPECT_EQ(plain.output.find("libOpenImageIO"), std::string::npos) << plain.output;
+
+    const CommandResult image = run_command(run + " --set ground.checkerboard=false --set ground.image=" + shot);
+    ASSERT_EQ(image.exit_code, 0) << image.output;
+    EXPECT_NE(image.output.find("libOpenImageIO"), std::string::npos) << image.output;
 }
 
 TEST(EndToEnd, EnvironmentOfTheWrongShapeExitsThreeNamingPathAndShape) {
