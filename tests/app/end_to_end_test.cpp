@@ -157,11 +157,12 @@ TEST(EndToEnd, StatsLogsFpsPercentilesCpuAndPeakMemory) {
     EXPECT_GT(megabytes_after(r.output, "peak resident memory "), 1.0) << r.output;
 }
 
-// Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (README "Memory"): about 220 MB
-// peak on Debian 12 with llvmpipe, of which about 130 MB is the shared libraries Debian's OpenImageIO
-// pulls in (`puddle --version` alone is that big) and about 70 MB Mesa's llvmpipe and LLVM. What Puddle
-// itself adds for a 1080p frame is the part this test holds under 64 MB: the peak at 1920x1080 minus
-// the peak of the same run at 32x32. The absolute ceiling guards against a regression of the rest.
+// Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (README "Memory"), on Debian 12
+// with llvmpipe: about 110 MB peak, of which Mesa alone (an EGL context drawing one 1080p pass) is about
+// 90 MB: libLLVM and the driver about 61 MB of pages, LLVM's heap and the frame itself the rest. What
+// Puddle adds for a 1080p frame is held under 64 MB: the peak at 1920x1080 minus the peak of the same
+// run at 32x32. The absolute ceilings catch what a difference cannot: a fixed cost such as OpenImageIO's
+// 140 MB of libraries (they made the peak 224 MB and the file-backed part 140 MB before it became a module).
 TEST(EndToEnd, HeadlessFullHdRunAddsUnder64MegabytesResident) {
     const CommandResult big = run_puddle("-b headless --size 1920x1080 --frames 8 --stats");
     const CommandResult small = run_puddle("-b headless --size 32x32 --frames 8 --stats");
@@ -169,10 +170,13 @@ TEST(EndToEnd, HeadlessFullHdRunAddsUnder64MegabytesResident) {
     ASSERT_EQ(small.exit_code, 0) << small.output;
     const double peak = megabytes_after(big.output, "peak resident memory ");
     const double base = megabytes_after(small.output, "peak resident memory ");
+    const double files = megabytes_after(big.output, "anonymous, ");
     ASSERT_GT(peak, 0.0) << big.output;
     ASSERT_GT(base, 0.0) << small.output;
+    ASSERT_GT(files, 0.0) << big.output;
     EXPECT_LT(peak - base, 64.0) << big.output << small.output;
-    EXPECT_LT(peak, 320.0) << "libraries and driver included:\n" << big.output;
+    EXPECT_LT(files, 100.0) << "pages of the binary and its shared libraries:\n" << big.output;
+    EXPECT_LT(peak, 160.0) << "libraries and driver included:\n" << big.output;
 }
 
 }  // namespace
