@@ -9,7 +9,8 @@ packages=(
     libgbm-dev libdrm-dev                                 # the kms backend
     libx11-dev                                            # the window backend
     libglm-dev libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev
-    libopenimageio-dev                                    # images in and out
+    libopenimageio-dev                                    # reading images (libpuddle-images.so)
+    libpng-dev                                            # writing the screenshot PNG
     libgpiod-dev libv4l-dev libjpeg-dev                   # knobs and camera
     libgtest-dev libgmock-dev libbenchmark-dev            # tests and puddle-bench
     xvfb xauth                                            # the window backend's test runs under Xvfb

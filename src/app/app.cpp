@@ -190,7 +190,8 @@ int run(int argc, const char* const* argv) {
     }
     systems::save_state(e.world().resource<systems::LiveTuning>());  // knob changes not yet saved
     if (!screenshot.empty()) {
-        const assets::Image& image = e.captured().empty() ? e.read_frame() : e.captured();
+        // Both branches are values: a `const Image&` bound to `cond ? read_frame() : captured()` was a copy.
+        const assets::Image image = e.captured().empty() ? e.read_frame() : e.take_captured();
         if (auto r = assets::write_png(screenshot, image); !r) return fail(r.error());
         const auto where = std::filesystem::absolute(screenshot).string();
         if (headless && !o.frames)

@@ -1,6 +1,7 @@
 #pragma once
-// Reading and writing images through OpenImageIO. Errors name the path and the reason; the app turns
-// them into exit code 3 at start-up.
+// Reading images through OpenImageIO, which libpuddle-images.so wraps and image_module.hpp loads on the
+// first read; writing PNG with libpng. Errors name the path and the reason; the app turns them into exit
+// code 3 at start-up.
 
 #include <string>
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include <sys/wait.h>
@@ -68,6 +69,52 @@ TEST(EndToEnd, MissingImageExitsThreeNamingThePath) {
     EXPECT_NE(r.output.find("/nonexistent/paving.jpg"), std::string::npos) << r.output;
 }
 
+// Images are read by libpuddle-images.so (OpenImageIO), loaded on first use. When it cannot be loaded the
+// read fails like any unreadable image: exit code 3 and one line naming the module and dlerror()'s reason.
+TEST(EndToEnd, ImageModuleThatCannotLoadExitsThreeNamingItAndWhy) {
+    TempDir dir;
+    const std::string png = (dir / "ground.png").string();
+    ASSERT_TRUE(assets::write_png(png, assets::Image::make(8, 8)).ok());
+    const std::string not_elf = dir.write("libpuddle-images.so", "not a shared object\n");
+    const std::string args =
+        " -b headless --size 32x32 --frames 1 --set ground.checkerboard=false --set ground.image=" + png;
+
+    const std::string missing = (dir / "missing" / "libpuddle-images.so").string();
+    const CommandResult r = run_command("PUDDLE_IMAGE_MODULE=" + missing + " " + PUDDLE_BINARY + args);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    const std::string line = "image: " + png + ": cannot read: image module " + missing +
+                             ": cannot open shared object file: No such file or directory";
+    EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
+
+    const CommandResult bad = run_command("PUDDLE_IMAGE_MODULE=" + not_elf + " " + PUDDLE_BINARY + args);
+    EXPECT_EQ(bad.exit_code, 3) << bad.output;
+    EXPECT_NE(bad.output.find("cannot read: image module " + not_elf + ": "), std::string::npos)
+        << bad.output;
+
+    const CommandResult found = run_puddle(args);  // the control: the build tree's module reads it
+    EXPECT_EQ(found.exit_code, 0) << found.output;
+}
+
+// OpenImageIO's Debian package maps about 140 MB of libraries; a run that reads no image file, screenshot
+// included (libpng writes it), must not load it. glibc's loader lists every library it loads, dlopen()ed
+// ones too, under LD_DEBUG=files; the run with a ground image shows the check would see it.
+TEST(EndToEnd, RunWithoutImageFilesNeverLoadsOpenImageIO) {
+    TempDir dir;
+    const std::string shot = (dir / "shot.png").string();
+    const std::string run =
+        std::string("LD_DEBUG=files ") + PUDDLE_BINARY + " -b headless --size 32x32 --frames 2";
+    const CommandResult plain = run_command(run + " --screenshot " + shot);
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    EXPECT_TRUE(std::filesystem::exists(shot));
+    EXPECT_NE(plain.output.find("file=libEGL"), std::string::npos) << "LD_DEBUG lists libraries:\n" << plain.output;
+    EXPECT_EQ(plain.output.find("libpuddle-images"), std::string::npos) << plain.output;
+    EXPECT_EQ(plain.output.find("libOpenImageIO"), std::string::npos) << plain.output;
+
+    const CommandResult image = run_command(run + " --set ground.checkerboard=false --set ground.image=" + shot);
+    ASSERT_EQ(image.exit_code, 0) << image.output;
+    EXPECT_NE(image.output.find("libOpenImageIO"), std::string::npos) << image.output;
+}
+
 TEST(EndToEnd, EnvironmentOfTheWrongShapeExitsThreeNamingPathAndShape) {
     TempDir dir;
     const std::string wide = (dir / "wide.png").string(), cross = (dir / "cross.png").string();
@@ -110,11 +157,12 @@ TEST(EndToEnd, StatsLogsFpsPercentilesCpuAndPeakMemory) {
     EXPECT_GT(megabytes_after(r.output, "peak resident memory "), 1.0) << r.output;
 }
 
-// Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (README "Memory"): about 220 MB
-// peak on Debian 12 with llvmpipe, of which about 130 MB is the shared libraries Debian's OpenImageIO
-// pulls in (`puddle --version` alone is that big) and about 70 MB Mesa's llvmpipe and LLVM. What Puddle
-// itself adds for a 1080p frame is the part this test holds under 64 MB: the peak at 1920x1080 minus
-// the peak of the same run at 32x32. The absolute ceiling guards against a regression of the rest.
+// Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (README "Memory"), on Debian 12
+// with llvmpipe: about 110 MB peak, of which Mesa alone (an EGL context drawing one 1080p pass) is about
+// 90 MB: libLLVM and the driver about 61 MB of pages, LLVM's heap and the frame itself the rest. What
+// Puddle adds for a 1080p frame is held under 64 MB: the peak at 1920x1080 minus the peak of the same
+// run at 32x32. The absolute ceilings catch what a difference cannot: a fixed cost such as OpenImageIO's
+// 140 MB of libraries (they made the peak 224 MB and the file-backed part 140 MB before it became a module).
 TEST(EndToEnd, HeadlessFullHdRunAddsUnder64MegabytesResident) {
     const CommandResult big = run_puddle("-b headless --size 1920x1080 --frames 8 --stats");
     const CommandResult small = run_puddle("-b headless --size 32x32 --frames 8 --stats");
@@ -122,10 +170,13 @@ TEST(EndToEnd, HeadlessFullHdRunAddsUnder64MegabytesResident) {
     ASSERT_EQ(small.exit_code, 0) << small.output;
     const double peak = megabytes_after(big.output, "peak resident memory ");
     const double base = megabytes_after(small.output, "peak resident memory ");
+    const double files = megabytes_after(big.output, "anonymous, ");
     ASSERT_GT(peak, 0.0) << big.output;
     ASSERT_GT(base, 0.0) << small.output;
+    ASSERT_GT(files, 0.0) << big.output;
     EXPECT_LT(peak - base, 64.0) << big.output << small.output;
-    EXPECT_LT(peak, 320.0) << "libraries and driver included:\n" << big.output;
+    EXPECT_LT(files, 100.0) << "pages of the binary and its shared libraries:\n" << big.output;
+    EXPECT_LT(peak, 160.0) << "libraries and driver included:\n" << big.output;
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ TEST(Package, DebHoldsBinaryConfigPresetsUnitUdevRuleAndUser) {
     EXPECT_NE(deb.find("puddle_"), std::string::npos) << deb;
 
     const std::string contents = run_command("dpkg-deb --contents " + deb).output;
-    for (const char* path : {"./usr/bin/puddle", "./etc/puddle/puddle.toml", "./usr/share/puddle/presets/downpour.toml",
+    for (const char* path : {"./usr/bin/puddle", "./usr/lib/puddle/libpuddle-images.so", "./etc/puddle/puddle.toml",
+                             "./usr/share/puddle/presets/downpour.toml",
                              "./usr/share/puddle/presets/still_night.toml", "./usr/lib/systemd/system/puddle.service",
                              "./usr/lib/udev/rules.d/99-puddle-gpio.rules", "./usr/lib/sysusers.d/puddle.conf",
                              "./usr/share/doc/puddle/README.md"})
@@ -36,6 +37,7 @@ TEST(Package, DebHoldsBinaryConfigPresetsUnitUdevRuleAndUser) {
     EXPECT_NE(info.find("Package: puddle"), std::string::npos) << info;
     EXPECT_NE(info.find("libgpiod"), std::string::npos) << "Depends from the linked libraries:\n" << info;
     EXPECT_NE(info.find("libegl1"), std::string::npos) << info;
+    EXPECT_NE(info.find("libopenimageio"), std::string::npos) << "the image module's library:\n" << info;
     EXPECT_EQ(run_command("dpkg-deb --field " + deb + " Package").output, "puddle\n");
     const std::string conffiles = run_command("dpkg-deb --ctrl-tarfile " + deb + " | tar -xO ./conffiles").output;
     EXPECT_EQ(conffiles, "/etc/puddle/puddle.toml\n");
