@@ -1,14 +1,28 @@
 #version 300 es
-// Turns the finished picture onto the screen by quarter turns, clockwise as seen on the screen, for
-// portrait or upside-down mounting (the Raspberry Pi's display controller cannot turn a plane by 90).
-// The canvas holds the picture upright; each screen pixel fetches exactly one canvas texel.
+// The last pass when the scene could not render straight to the screen: turns the finished picture by
+// quarter turns, clockwise as seen on the screen, for portrait or upside-down mounting (the Raspberry
+// Pi's display controller cannot turn a plane by 90), and with SCALED also scales it up from a smaller
+// canvas (render.scale). Unscaled, each screen pixel fetches exactly one canvas texel; scaled, the
+// canvas is filtered bilinearly.
 precision highp float;
 precision highp int;
 
 uniform highp sampler2D u_canvas;
-uniform int u_quarter_turns;  // 1, 2 or 3
+uniform int u_quarter_turns;  // 0 (SCALED only), 1, 2 or 3
 out vec4 o_color;
 
+#ifdef SCALED
+uniform vec2 u_screen_size;
+
+void main() {
+    vec2 q = gl_FragCoord.xy / u_screen_size;  // the pixel's centre as a fraction of the screen
+    vec2 uv = q;
+    if (u_quarter_turns == 1) uv = vec2(1.0 - q.y, q.x);
+    else if (u_quarter_turns == 2) uv = 1.0 - q;
+    else if (u_quarter_turns == 3) uv = vec2(q.y, 1.0 - q.x);
+    o_color = texture(u_canvas, uv);
+}
+#else
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);  // screen pixel, origin bottom left
     ivec2 last = textureSize(u_canvas, 0) - 1;
@@ -18,3 +32,4 @@ void main() {
     else src = ivec2(p.y, last.y - p.x);
     o_color = texelFetch(u_canvas, src, 0);
 }
+#endif

@@ -4,36 +4,59 @@
 
 namespace puddle::systems {
 
+namespace {
+
+Result<void> build_pipelines(gpu::Device& device, DisplayRotation& r) {
+    if (r.pipeline.id() != 0) return {};
+    auto exact = device.create_pipeline({.label = "rotate", .fragment = "rotate.frag", .textures = {"u_canvas"}});
+    if (!exact) return exact.error();
+    auto upscale = device.create_pipeline(
+        {.label = "upscale", .fragment = "rotate.frag", .defines = {"SCALED"}, .textures = {"u_canvas"}});
+    if (!upscale) return upscale.error();
+    r.pipeline = std::move(*exact);
+    r.upscale = std::move(*upscale);
+    r.sampler = device.create_sampler({.label = "canvas", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+    r.smooth = device.create_sampler({.label = "canvas (scaled)"});
+    return {};
+}
+
+}  // namespace
+
 gpu::FrameTarget begin_rotated_frame(gpu::Device& device, const params::Params& params, DisplayRotation& r,
                                      gpu::FrameTarget display) {
     r.display = display;
     const int degrees = std::stoi(params.s(params::ParamId::display_rotation));
+    const float scale = params.f(params::ParamId::render_scale);
     r.quarter_turns = degrees / 90;
-    if (r.quarter_turns == 0) return display;
-    const glm::ivec2 size = r.quarter_turns % 2 ? glm::ivec2(display.size.y, display.size.x) : display.size;
+    const glm::ivec2 turned = r.quarter_turns % 2 ? glm::ivec2(display.size.y, display.size.x) : display.size;
+    const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
+    r.scaled = size != turned;
+    if (r.quarter_turns == 0 && !r.scaled) return display;
     if (size != r.canvas_size) {
-        if (r.pipeline.id() == 0) {
-            auto pipeline = device.create_pipeline({.label = "rotate", .fragment = "rotate.frag", .textures = {"u_canvas"}});
-            if (!pipeline) {
-                spdlog::error("{} (showing the picture unturned)", pipeline.error().message);
-                r.quarter_turns = 0;
-                return display;
-            }
-            r.pipeline = std::move(*pipeline);
-            r.sampler = device.create_sampler({.label = "canvas", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+        if (auto built = build_pipelines(device, r); !built) {
+            spdlog::error("{} (showing the picture unturned, at full size)", built.error().message);
+            r.quarter_turns = 0;
+            r.scaled = false;
+            return display;
         }
         r.canvas = device.create_texture(
-            {.label = "rotation canvas", .format = gpu::TextureFormat::RGBA8, .width = size.x, .height = size.y});
+            {.label = "canvas", .format = gpu::TextureFormat::RGBA8, .width = size.x, .height = size.y});
         r.canvas_size = size;
-        spdlog::info("display: turned {} degrees clockwise; the picture renders at {}x{}", degrees, size.x, size.y);
+        spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}", display.size.x,
+                     display.size.y, degrees, size.x, size.y, r.scaled ? " and is scaled up" : "");
     }
     return {&r.canvas, size};
 }
 
 void rotation_system(gpu::Device& device, const DisplayRotation& r) {
-    if (r.quarter_turns == 0) return;
-    auto pass = device.begin_pass({.label = "rotate", .target = r.display, .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(r.pipeline).set_texture(0, r.canvas, r.sampler).set("u_quarter_turns", r.quarter_turns);
+    if (r.quarter_turns == 0 && !r.scaled) return;
+    auto pass = device.begin_pass({.label = r.scaled ? "upscale" : "rotate", .target = r.display,
+                                   .load = gpu::LoadOp::DontCare});
+    if (r.scaled)
+        pass.set_pipeline(r.upscale).set_texture(0, r.canvas, r.smooth).set("u_screen_size", glm::vec2(r.display.size));
+    else
+        pass.set_pipeline(r.pipeline).set_texture(0, r.canvas, r.sampler);
+    pass.set("u_quarter_turns", r.quarter_turns);
     pass.draw_fullscreen();
 }
 

@@ -331,6 +331,8 @@ struct Look {
 const std::vector<Look>& looks() {
     static const std::vector<Look> all{
         {"puddle_pulse", {}},
+        {"puddle_scale_0.5", {"render.scale=0.5"}},
+        {"puddle_image_ground", {"ground.checkerboard=false"}},
         {"puddle_grid_10", {"drops.model=grid", "grid.drops_per_second=10"}},
         {"puddle_grid_1000", {"drops.model=grid", "grid.drops_per_second=1000"}},
         {"puddle_analytic_100", {"drops.model=analytic", "analytic.sources=100"}},
@@ -351,7 +353,7 @@ void apply(Params& params, const std::vector<std::string>& sets) {
 void restore_default_look(Params& params) {
     const Params defaults;
     for (ParamId id : {ParamId::scene_kind, ParamId::drops_model, ParamId::overlay_rain, ParamId::grid_drops_per_second,
-                       ParamId::analytic_sources})
+                       ParamId::analytic_sources, ParamId::render_scale, ParamId::ground_checkerboard})
         params.set(id, defaults.at(id), params::ParamSource::CommandLine);
 }
 

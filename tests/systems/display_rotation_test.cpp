@@ -1,5 +1,10 @@
 // display.rotation: the picture on a turned screen is the upright picture turned, pixel for pixel.
+// render.scale: the picture at half scale is the half-size picture scaled up bilinearly.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
@@ -9,8 +14,9 @@ namespace {
 
 constexpr int W = 160, H = 90;
 
-assets::Image render(const std::string& rotation, glm::ivec2 size) {
-    auto engine = make_engine(make_params({"display.rotation=" + rotation, "rain.seed=5"}), size);
+assets::Image render(const std::string& rotation, glm::ivec2 size, const std::string& scale = "1") {
+    auto engine =
+        make_engine(make_params({"display.rotation=" + rotation, "rain.seed=5", "render.scale=" + scale}), size);
     EXPECT_TRUE(engine);
     return engine ? render_frames(*engine, 30) : assets::Image{};
 }
@@ -56,6 +62,49 @@ TEST(DisplayRotation, ChangingItWhileRunningTakesEffectOnTheNextFrame) {
     const assets::Image turned = render_frames(*engine, 1);
     const assets::Image upright = render("0", {W, H});
     EXPECT_LE(compare_images(turned, turn(upright, 2), 0).max_channel_diff, 1);
+}
+
+// Bilinear scaling by 2, texel centres on texel centres, edges clamped: what a GPU's linear filter does.
+assets::Image double_size(const assets::Image& a) {
+    assets::Image b = assets::Image::make(a.width * 2, a.height * 2);
+    for (int r = 0; r < b.height; ++r)
+        for (int c = 0; c < b.width; ++c) {
+            const float x = std::clamp((c + 0.5f) / 2.0f - 0.5f, 0.0f, float(a.width - 1));
+            const float y = std::clamp((r + 0.5f) / 2.0f - 0.5f, 0.0f, float(a.height - 1));
+            const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, a.width - 1), y1 = std::min(y0 + 1, a.height - 1);
+            const float fx = x - float(x0), fy = y - float(y0);
+            for (int k = 0; k < 4; ++k) {
+                const auto at = [&](int xx, int yy) {
+                    return float(a.data[(static_cast<std::size_t>(yy) * a.width + xx) * 4 + k]);
+                };
+                const float top = at(x0, y0) + (at(x1, y0) - at(x0, y0)) * fx;
+                const float bottom = at(x0, y1) + (at(x1, y1) - at(x0, y1)) * fx;
+                b.data[(static_cast<std::size_t>(r) * b.width + c) * 4 + k] =
+                    static_cast<std::uint8_t>(std::lround(top + (bottom - top) * fy));
+            }
+        }
+    return b;
+}
+
+TEST(RenderScale, HalfScaleIsTheHalfSizePictureScaledUp) {
+    const assets::Image small = render("0", {W, H});
+    const assets::Image scaled = render("0", {2 * W, 2 * H}, "0.5");
+    ASSERT_EQ(scaled.width, 2 * W);
+    ASSERT_EQ(scaled.height, 2 * H);
+    const ImageDiff d = compare_images(scaled, double_size(small), 2);
+    EXPECT_LE(d.max_channel_diff, 2);
+    EXPECT_LT(d.mean_abs_diff, 0.2);
+    // The comparison sees detail: the full-scale picture has some the scaled one cannot.
+    EXPECT_GT(compare_images(render("0", {2 * W, 2 * H}), scaled, 8).fraction_over, 0.01);
+}
+
+TEST(RenderScale, TurnsAndScalesTogether) {
+    const assets::Image scaled = render("0", {2 * W, 2 * H}, "0.5");
+    const assets::Image turned = render("180", {2 * W, 2 * H}, "0.5");
+    EXPECT_LE(compare_images(turned, turn(scaled, 2), 0).max_channel_diff, 1);
+    const assets::Image portrait = render("90", {2 * H, 2 * W}, "0.5");
+    ASSERT_EQ(portrait.width, 2 * H);
+    EXPECT_LE(compare_images(portrait, turn(scaled, 1), 1).mean_abs_diff, 0.05);
 }
 
 }  // namespace
