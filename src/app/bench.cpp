@@ -353,13 +353,15 @@ void apply(Params& params, const std::vector<std::string>& sets) {
 void restore_default_look(Params& params) {
     const Params defaults;
     for (ParamId id : {ParamId::scene_kind, ParamId::drops_model, ParamId::overlay_rain, ParamId::grid_drops_per_second,
-                       ParamId::analytic_sources, ParamId::render_scale, ParamId::ground_checkerboard})
+                       ParamId::analytic_sources, ParamId::render_scale, ParamId::ground_checkerboard,
+                       ParamId::render_method})
         params.set(id, defaults.at(id), params::ParamSource::CommandLine);
 }
 
 void bench_look(benchmark::State& state, const Look& look) {
     Bench* b = bench_for(look_size, state);
     if (!b) return;
+    restore_default_look(b->engine->params());  // the frame benchmarks before leave a method set
     apply(b->engine->params(), look.sets);
     std::string error;
     measure(state, b->engine->device(), [&] {
