@@ -112,7 +112,8 @@ TEST(RenderSystem, NormalStrengthScalesTheRipples) {
     EXPECT_GT(compare_images(calm, hard, 8).mean_abs_diff, 1.5 * compare_images(calm, soft, 8).mean_abs_diff);
 }
 
-// The default method meets the flat top and refines twice; the reference sphere-traces. Stated
+// The default method meets the flat top and refines once along the surface's slope; the reference
+// sphere-traces. Stated
 // tolerance: mean difference under 1.5 of 255 and under 2% of pixels differing by more than 24.
 // The trace runs to convergence (64 steps): at 14 steps it stops short at grazing angles, where each
 // step only closes the gap by a factor 1 - |dir.y|, and misses the far water.
