@@ -27,9 +27,9 @@ gpu::PipelineDesc puddle_desc(const PuddleVariant& v, bool surface_unorm) {
 
 const gpu::Pipeline* PuddleRenderer::pipeline(gpu::Device& device, const PuddleVariant& v) {
     LazyPipeline& slot = variants[variant_index(v)];
-    const bool built = slot.ready();
+    const bool was_ready = slot.ready();
     if (!slot.ensure_or_log(device, [&] { return puddle_desc(v, surface_unorm); })) return nullptr;
-    if (!built) spdlog::debug("render: compiled the puddle shader for {}", describe(v));
+    if (!was_ready) spdlog::debug("render: compiled the puddle shader for {}", describe(v));
     return &slot.pipeline;
 }
 

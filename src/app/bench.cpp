@@ -29,8 +29,6 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
-#include <regex>
-#include <sstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -39,6 +37,7 @@
 
 #include <fmt/format.h>
 
+#include "app/bench_baseline.hpp"
 #include "app/engine.hpp"
 #include "camera/mjpeg_decoder.hpp"
 #include "systems/camera_environment.hpp"
@@ -486,8 +485,8 @@ void print_camera_summary(const Collector& c) {
     }
 }
 
-// The render shader's estimated per-pixel cost for one method, with the default march steps.
-// The variant the default parameters select (systems/puddle_variant.hpp), with the method given.
+// The render shader's estimated per-pixel cost for one method: the variant the default parameters select
+// (systems/puddle_variant.hpp), with the default march steps.
 gpu::ShaderCost shader_cost(const char* method) {
     systems::PuddleVariant v = systems::choose_puddle_variant(Params{}, false);
     v.raymarch = std::string(method) == "raymarch";
@@ -495,9 +494,6 @@ gpu::ShaderCost shader_cost(const char* method) {
     if (!shader) return {};
     return gpu::estimate_shader_cost(shader->source, Params{}.i(ParamId::render_march_steps));
 }
-
-// The figures the baseline holds: ratios (lower is better) and shader costs, by name.
-using Figures = std::map<std::string, double>;
 
 Figures figures(const Collector& c) {
     Figures f;
@@ -518,56 +514,13 @@ Figures figures(const Collector& c) {
     return f;
 }
 
-// A flat JSON object of names and numbers, as write_baseline makes it.
-Figures read_baseline(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string s = text.str();
-    Figures f;
-    const std::regex entry(R"re("([^"]+)"\s*:\s*([-+0-9.eE]+))re");
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), entry); it != std::sregex_iterator(); ++it)
-        f[(*it)[1].str()] = std::stod((*it)[2].str());
-    return f;
-}
-
-bool write_baseline(const std::string& path, Figures f) {
-    for (const auto& [name, value] : read_baseline(path)) f.emplace(name, value);  // keeps what was not run
-    std::ofstream out(path);
-    out << "{\n  \"_about\": \"puddle-bench --update-baseline: ratios to the floor pass (or to raymarch) and the "
-           "render shader's estimated cost; lower is better\",\n";
-    std::size_t k = 0;
-    for (const auto& [name, value] : f)
-        out << fmt::format("  \"{}\": {:.3f}{}\n", name, value, ++k < f.size() ? "," : "");
-    out << "}\n";
-    return static_cast<bool>(out);
-}
-
-// Ratios drift with the machine's load, so they get a generous margin; the shader cost is exact.
-constexpr double ratio_tolerance = 1.25;
-
-// Prints the shader cost and each figure beside its baseline; true when one regressed.
-bool check_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
+// Prints the shader cost, then each figure beside its baseline; true when a shader cost regressed.
+bool print_against_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
     std::printf("\nRender shader, estimated per pixel (longest path, from the source; gpu/shader_cost.hpp)\n");
     for (const char* m : methods)
         std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n", m,
                     now.at(fmt::format("shader/{} texture fetches", m)), now.at(fmt::format("shader/{} alu ops", m)));
-    std::printf("\nAgainst the baseline %s (ratios, lower is better; flagged over %.0f%%)\n", path.c_str(),
-                (ratio_tolerance - 1) * 100);
-    bool regressed = false;
-    for (const auto& [name, value] : now) {
-        const auto base = baseline.find(name);
-        if (base == baseline.end()) {
-            std::printf("  %-36s %9.2f  (no baseline)\n", name.c_str(), value);
-            continue;
-        }
-        const bool exact = name.starts_with("shader/");
-        const bool bad = exact ? value > base->second + 0.5 : value > base->second * ratio_tolerance;
-        regressed = regressed || (bad && exact);  // timings only warn: one noisy run must not fail a build
-        std::printf("  %-36s %9.2f  baseline %9.2f  %s\n", name.c_str(), value, base->second,
-                    bad ? "REGRESSION" : value < base->second / ratio_tolerance ? "better" : "ok");
-    }
-    return regressed;
+    return check_baseline(now, baseline, path);
 }
 
 void register_all() {
@@ -637,7 +590,7 @@ int main(int argc, char** argv) {
     }
     print_summary(collector);
     const Figures now = figures(collector);
-    const bool regressed = check_baseline(now, read_baseline(baseline_path), baseline_path);
+    const bool regressed = print_against_baseline(now, read_baseline(baseline_path), baseline_path);
     if (update_baseline) {
         if (!write_baseline(baseline_path, now)) std::fprintf(stderr, "puddle-bench: cannot write %s\n", baseline_path.c_str());
         else std::printf("\nBaseline written: %s\n", baseline_path.c_str());
