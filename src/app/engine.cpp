@@ -2,8 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
-#include "systems/display_rotation.hpp"
 #include "systems/frame_clock.hpp"
+#include "systems/output_canvas.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/render_system.hpp"
 
@@ -27,9 +27,9 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
     if (auto r = systems::add_puddle_plugin(engine->world_, engine->schedule_); !r) return r.error();
 
     Engine* self = engine.get();
-    engine->world_.insert_resource<systems::DisplayRotation>();
-    engine->schedule_.add_system(ecs::Stage::Present, "rotate", [](ecs::World& w) {
-        systems::rotation_system(w.resource<gpu::Device>(), w.resource<systems::DisplayRotation>());
+    engine->world_.insert_resource<systems::OutputCanvas>();
+    engine->schedule_.add_system(ecs::Stage::Present, "output canvas", [](ecs::World& w) {
+        systems::output_canvas_system(w.resource<gpu::Device>(), w.resource<systems::OutputCanvas>());
     });
     engine->schedule_.add_system(ecs::Stage::Present, "capture", [self](ecs::World&) {
         if (!self->capture_) return;
@@ -44,7 +44,9 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
 // Members die in reverse order: the world (and every GPU object in it) before the display's EGL context.
 Engine::~Engine() = default;
 
-params::Params& Engine::params() { return world_.resource<params::Params>(); }
+params::Params& Engine::params() {
+    return world_.resource<params::Params>();
+}
 gpu::Device& Engine::device() {
     display_->make_current();  // callers go on to make GL calls through the device
     return world_.resource<gpu::Device>();
@@ -54,8 +56,8 @@ Result<void> Engine::frame(double dt) {
     display_->make_current();
     world_.resource<systems::FrameClock>().frame_dt = dt;
     world_.resource<systems::RenderTarget>().target =
-        systems::begin_rotated_frame(world_.resource<gpu::Device>(), world_.resource<params::Params>(),
-                                     world_.resource<systems::DisplayRotation>(), display_->frame_target());
+        systems::begin_canvas_frame(world_.resource<gpu::Device>(), world_.resource<params::Params>(),
+                                    world_.resource<systems::OutputCanvas>(), display_->frame_target());
     schedule_.run_frame(world_);
     return present_result_;
 }

@@ -12,9 +12,9 @@
 namespace puddle::systems {
 
 // Resource.
-struct DisplayRotation {
+struct OutputCanvas {
     int quarter_turns = 0;
-    bool scaled = false;       // the canvas is smaller than the (turned) screen
+    bool scaled = false;  // the canvas is smaller than the (turned) screen
     gpu::Texture canvas;
     glm::ivec2 canvas_size{0, 0};
     gpu::Pipeline pipeline;    // exact quarter turns: one texel per screen pixel
@@ -22,14 +22,15 @@ struct DisplayRotation {
     gpu::Sampler sampler;      // nearest
     gpu::Sampler smooth;       // bilinear
     gpu::FrameTarget display;  // this frame's display target
+    bool unavailable = false;  // its shaders failed to build: said once, then the picture stays as rendered
 };
 
 // Called before each frame: remembers the display target and returns where the scene should render
 // (the display, or the canvas, made or resized as the rotation, the scale and the display size need).
-gpu::FrameTarget begin_rotated_frame(gpu::Device& device, const params::Params& params, DisplayRotation& rotation,
-                                     gpu::FrameTarget display);
+gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& rotation,
+                                    gpu::FrameTarget display);
 // Present stage, before the frame is shown: turns and scales the canvas onto the display (nothing
 // when the scene rendered to the display).
-void rotation_system(gpu::Device& device, const DisplayRotation& rotation);
+void output_canvas_system(gpu::Device& device, const OutputCanvas& rotation);
 
 }  // namespace puddle::systems

@@ -1,4 +1,4 @@
-#include "systems/display_rotation.hpp"
+#include "systems/output_canvas.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -6,24 +6,28 @@ namespace puddle::systems {
 
 namespace {
 
-Result<void> build_pipelines(gpu::Device& device, DisplayRotation& r) {
+Result<void> build_pipelines(gpu::Device& device, OutputCanvas& r) {
     if (r.pipeline.id() != 0) return {};
-    auto exact = device.create_pipeline({.label = "rotate", .fragment = "rotate.frag", .textures = {"u_canvas"}});
+    auto exact = device.create_pipeline(
+        {.label = "rotate", .fragment = "output_canvas.frag", .textures = {"u_canvas"}});
     if (!exact) return exact.error();
-    auto upscale = device.create_pipeline(
-        {.label = "upscale", .fragment = "rotate.frag", .defines = {"SCALED"}, .textures = {"u_canvas"}});
+    auto upscale = device.create_pipeline({.label = "upscale",
+                                           .fragment = "output_canvas.frag",
+                                           .defines = {"SCALED"},
+                                           .textures = {"u_canvas"}});
     if (!upscale) return upscale.error();
     r.pipeline = std::move(*exact);
     r.upscale = std::move(*upscale);
-    r.sampler = device.create_sampler({.label = "canvas", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+    r.sampler =
+        device.create_sampler({.label = "canvas", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     r.smooth = device.create_sampler({.label = "canvas (scaled)"});
     return {};
 }
 
 }  // namespace
 
-gpu::FrameTarget begin_rotated_frame(gpu::Device& device, const params::Params& params, DisplayRotation& r,
-                                     gpu::FrameTarget display) {
+gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& r,
+                                    gpu::FrameTarget display) {
     r.display = display;
     const int degrees = std::stoi(params.s(params::ParamId::display_rotation));
     const float scale = params.f(params::ParamId::render_scale);
@@ -32,9 +36,15 @@ gpu::FrameTarget begin_rotated_frame(gpu::Device& device, const params::Params& 
     const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
     r.scaled = size != turned;
     if (r.quarter_turns == 0 && !r.scaled) return display;
+    if (r.unavailable) {
+        r.quarter_turns = 0;
+        r.scaled = false;
+        return display;
+    }
     if (size != r.canvas_size) {
         if (auto built = build_pipelines(device, r); !built) {
             spdlog::error("{} (showing the picture unturned, at full size)", built.error().message);
+            r.unavailable = true;  // a shader that failed once fails every frame: no error 60 times a second
             r.quarter_turns = 0;
             r.scaled = false;
             return display;
@@ -42,18 +52,21 @@ gpu::FrameTarget begin_rotated_frame(gpu::Device& device, const params::Params& 
         r.canvas = device.create_texture(
             {.label = "canvas", .format = gpu::TextureFormat::RGBA8, .width = size.x, .height = size.y});
         r.canvas_size = size;
-        spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}", display.size.x,
-                     display.size.y, degrees, size.x, size.y, r.scaled ? " and is scaled up" : "");
+        spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}",
+                     display.size.x, display.size.y, degrees, size.x, size.y,
+                     r.scaled ? " and is scaled up" : "");
     }
     return {&r.canvas, size};
 }
 
-void rotation_system(gpu::Device& device, const DisplayRotation& r) {
+void output_canvas_system(gpu::Device& device, const OutputCanvas& r) {
     if (r.quarter_turns == 0 && !r.scaled) return;
-    auto pass = device.begin_pass({.label = r.scaled ? "upscale" : "rotate", .target = r.display,
-                                   .load = gpu::LoadOp::DontCare});
+    auto pass = device.begin_pass(
+        {.label = r.scaled ? "upscale" : "rotate", .target = r.display, .load = gpu::LoadOp::DontCare});
     if (r.scaled)
-        pass.set_pipeline(r.upscale).set_texture(0, r.canvas, r.smooth).set("u_screen_size", glm::vec2(r.display.size));
+        pass.set_pipeline(r.upscale)
+            .set_texture(0, r.canvas, r.smooth)
+            .set("u_screen_size", glm::vec2(r.display.size));
     else
         pass.set_pipeline(r.pipeline).set_texture(0, r.canvas, r.sampler);
     pass.set("u_quarter_turns", r.quarter_turns);
