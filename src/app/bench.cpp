@@ -23,7 +23,6 @@
 // without it a pass would look as cheap as its API calls.
 
 #include <benchmark/benchmark.h>
-#include <jpeglib.h>
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -40,6 +39,7 @@
 #include "app/bench_baseline.hpp"
 #include "app/engine.hpp"
 #include "camera/mjpeg_decoder.hpp"
+#include "camera/mjpeg_encoder.hpp"
 #include "systems/camera_environment.hpp"
 #include "assets/procedural.hpp"
 #include "gpu/shader_cost.hpp"
@@ -278,34 +278,14 @@ void bench_camera_external(benchmark::State& state) {
 }
 
 void bench_camera_mjpeg(benchmark::State& state) {
-    // A 1280x720 JPEG made by encoding a converted frame would need an encoder here; libjpeg's own
-    // output of a mid-grey frame with fine stripes is a fair stand-in for a webcam's MJPEG.
+    // Fine diagonal stripes on a mid-grey frame: a fair stand-in for a webcam's MJPEG at quality 85.
     static std::vector<std::byte> jpeg;
     if (jpeg.empty()) {
-        jpeg_compress_struct info{};
-        jpeg_error_mgr errors{};
-        info.err = jpeg_std_error(&errors);
-        jpeg_create_compress(&info);
-        unsigned char* out = nullptr;
-        unsigned long size = 0;
-        jpeg_mem_dest(&info, &out, &size);
-        info.image_width = camera_size.x;
-        info.image_height = camera_size.y;
-        info.input_components = 3;
-        info.in_color_space = JCS_RGB;
-        jpeg_set_defaults(&info);
-        jpeg_set_quality(&info, 85, TRUE);
-        jpeg_start_compress(&info, TRUE);
-        std::vector<unsigned char> row(static_cast<std::size_t>(camera_size.x) * 3);
-        while (info.next_scanline < info.image_height) {
-            for (std::size_t i = 0; i < row.size(); ++i) row[i] = static_cast<unsigned char>((i * 7 + info.next_scanline * 3) & 0xff);
-            unsigned char* p = row.data();
-            jpeg_write_scanlines(&info, &p, 1);
-        }
-        jpeg_finish_compress(&info);
-        jpeg_destroy_compress(&info);
-        jpeg.assign(reinterpret_cast<std::byte*>(out), reinterpret_cast<std::byte*>(out) + size);
-        std::free(out);
+        std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera_size.x) * camera_size.y * 3);
+        const std::size_t stride = static_cast<std::size_t>(camera_size.x) * 3;
+        for (std::size_t i = 0; i < rgb.size(); ++i)
+            rgb[i] = static_cast<std::uint8_t>(((i % stride) * 7 + (i / stride) * 3) & 0xff);
+        jpeg = camera::encode_jpeg(rgb, camera_size.x, camera_size.y, 85);
     }
     camera::MjpegDecoder decoder;
     for (auto _ : state) {

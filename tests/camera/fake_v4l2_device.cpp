@@ -1,6 +1,5 @@
 #include "camera/fake_v4l2_device.hpp"
 
-#include <jpeglib.h>
 #include <linux/videodev2.h>
 #include <sys/mman.h>
 
@@ -8,6 +7,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+
+#include "camera/mjpeg_encoder.hpp"
 
 namespace puddle::test {
 
@@ -232,40 +233,16 @@ int FakeV4l2Device::poll(pollfd* fds, nfds_t count, int) {
 
 std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b,
                                    int quality) {
-    jpeg_compress_struct info{};
-    jpeg_error_mgr errors{};
-    info.err = jpeg_std_error(&errors);
-    jpeg_create_compress(&info);
-    unsigned char* out = nullptr;
-    unsigned long size = 0;
-    jpeg_mem_dest(&info, &out, &size);
-    info.image_width = static_cast<JDIMENSION>(width);
-    info.image_height = static_cast<JDIMENSION>(height);
-    info.input_components = 3;
-    info.in_color_space = JCS_RGB;
-    jpeg_set_defaults(&info);
-    jpeg_set_quality(&info, quality, TRUE);
-    jpeg_start_compress(&info, TRUE);
-    std::vector<unsigned char> row(static_cast<std::size_t>(width) * 3);
-    for (int x = 0; x < width; ++x) {
-        row[std::size_t(x) * 3] = r;
-        row[std::size_t(x) * 3 + 1] = g;
-        row[std::size_t(x) * 3 + 2] = b;
-    }
-    // A little texture in the lower half, so two qualities give two lengths.
-    while (info.next_scanline < info.image_height) {
-        std::vector<unsigned char> line = row;
-        if (info.next_scanline >= info.image_height / 2)
-            for (int x = 0; x < width; x += 2)
-                line[std::size_t(x) * 3] = static_cast<unsigned char>(r ^ 0x20);
-        unsigned char* p = line.data();
-        jpeg_write_scanlines(&info, &p, 1);
-    }
-    jpeg_finish_compress(&info);
-    jpeg_destroy_compress(&info);
-    std::vector<std::byte> bytes(reinterpret_cast<std::byte*>(out), reinterpret_cast<std::byte*>(out) + size);
-    std::free(out);
-    return bytes;
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * height * 3);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            std::uint8_t* p = &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+            // A little texture in the lower half, so two qualities give two lengths.
+            p[0] = (y >= height / 2 && x % 2 == 0) ? static_cast<std::uint8_t>(r ^ 0x20) : r;
+            p[1] = g;
+            p[2] = b;
+        }
+    return camera::encode_jpeg(rgb, width, height, quality);
 }
 
 }  // namespace puddle::test
