@@ -28,8 +28,8 @@ Field read_surface_heights(app::Engine& e) {
     const auto& surface = e.world().resource<systems::Surface>();
     const std::vector<float> texels = e.device().read_texture(surface.texture);
     Field f{surface.resolution, std::vector<float>(texels.size() / 2)};
-    for (std::size_t i = 0; i < texels.size() / 4; ++i)
-        f.hv[2 * i] = surface.unorm ? (texels[4 * i] * 2.0f - 1.0f) * 4.0f : texels[4 * i];
+    for (std::size_t i = 0; i < texels.size() / 4; ++i)  // decoded as surface_encoding.glsl does
+        f.hv[2 * i] = surface.unorm ? (texels[4 * i] * 255.0f - 128.0f) / 127.0f * 4.0f : texels[4 * i];
     return f;
 }
 
