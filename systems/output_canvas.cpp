@@ -7,7 +7,6 @@ namespace puddle::systems {
 namespace {
 
 Result<void> build_pipelines(gpu::Device& device, OutputCanvas& r) {
-    if (r.pipeline.id() != 0) return {};
     auto exact = device.create_pipeline(
         {.label = "rotate", .fragment = "output_canvas.frag", .textures = {"u_canvas"}});
     if (!exact) return exact.error();
@@ -36,19 +35,18 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
     const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
     r.scaled = size != turned;
     if (r.quarter_turns == 0 && !r.scaled) return display;
+    if (!r.unavailable && r.pipeline.id() == 0) {
+        if (auto built = build_pipelines(device, r); !built) {
+            spdlog::error("{} (showing the picture unturned, at full size)", built.error().message);
+            r.unavailable = true;  // a shader that failed once fails every frame: no error 60 times a second
+        }
+    }
     if (r.unavailable) {
         r.quarter_turns = 0;
         r.scaled = false;
         return display;
     }
     if (size != r.canvas_size) {
-        if (auto built = build_pipelines(device, r); !built) {
-            spdlog::error("{} (showing the picture unturned, at full size)", built.error().message);
-            r.unavailable = true;  // a shader that failed once fails every frame: no error 60 times a second
-            r.quarter_turns = 0;
-            r.scaled = false;
-            return display;
-        }
         r.canvas = device.create_texture(
             {.label = "canvas", .format = gpu::TextureFormat::RGBA8, .width = size.x, .height = size.y});
         r.canvas_size = size;

@@ -27,10 +27,10 @@ struct OutputCanvas {
 
 // Called before each frame: remembers the display target and returns where the scene should render
 // (the display, or the canvas, made or resized as the rotation, the scale and the display size need).
-gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& rotation,
+gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
                                     gpu::FrameTarget display);
 // Present stage, before the frame is shown: turns and scales the canvas onto the display (nothing
 // when the scene rendered to the display).
-void output_canvas_system(gpu::Device& device, const OutputCanvas& rotation);
+void output_canvas_system(gpu::Device& device, const OutputCanvas& canvas);
 
 }  // namespace puddle::systems

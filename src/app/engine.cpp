@@ -44,9 +44,7 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
 // Members die in reverse order: the world (and every GPU object in it) before the display's EGL context.
 Engine::~Engine() = default;
 
-params::Params& Engine::params() {
-    return world_.resource<params::Params>();
-}
+params::Params& Engine::params() { return world_.resource<params::Params>(); }
 gpu::Device& Engine::device() {
     display_->make_current();  // callers go on to make GL calls through the device
     return world_.resource<gpu::Device>();
