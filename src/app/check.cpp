@@ -146,10 +146,10 @@ int run_check(const CliOptions& o, const std::string& config_path) {
     if (videos.empty()) r.absent("no /dev/video*: environment.source = \"camera\" would show the cubemap");
     std::sort(videos.begin(), videos.end());
     for (const auto& v : videos) {
-        auto offer = camera::describe_device(camera::system_v4l2_io(), v);
-        if (offer) r.ok(fmt::format("{}: {}", v, *offer));
-        else if (offer.error().message.find("no capture formats") != std::string::npos) r.absent(offer.error().message);
-        else r.fix(offer.error().message);
+        auto offer = camera::device_offer(camera::system_v4l2_io(), v);
+        if (!offer) r.fix(offer.error().message);
+        else if (offer->empty()) r.absent(fmt::format("{}: offers no capture formats (not a camera?)", v));
+        else r.ok(fmt::format("{}: {}", v, camera::describe_offer(*offer)));
     }
 
     std::printf("\n%s\n", r.problems == 0 ? "Everything Puddle needs here is in order."

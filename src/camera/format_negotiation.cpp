@@ -1,13 +1,12 @@
 #include "camera/format_negotiation.hpp"
 
 #include <fcntl.h>
-
-#include <cerrno>
-#include <cstring>
 #include <fmt/format.h>
 #include <linux/videodev2.h>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
 
 namespace puddle::camera {
 
@@ -89,15 +88,14 @@ std::string describe_offer(const std::vector<OfferedFormat>& offered) {
     return out;
 }
 
-Result<std::string> describe_device(V4l2Io& io, const std::string& path) {
+Result<std::vector<OfferedFormat>> device_offer(V4l2Io& io, const std::string& path) {
     const int fd = io.open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0)
         return make_error(ExitCode::Runtime, "{}: cannot open: {}{}", path, std::strerror(errno),
                           errno == EACCES ? " (add the user to group video)" : "");
-    const auto offered = enumerate_formats(io, fd);
+    auto offered = enumerate_formats(io, fd);
     io.close(fd);
-    if (offered.empty()) return make_error(ExitCode::Runtime, "{}: offers no capture formats (not a camera?)", path);
-    return describe_offer(offered);
+    return offered;
 }
 
 }  // namespace puddle::camera

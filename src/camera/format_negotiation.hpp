@@ -31,8 +31,8 @@ std::optional<std::uint32_t> choose_format(const std::vector<OfferedFormat>& off
                                            FormatPreference preference);
 // "YUYV 640x480, 1280x720; H264 1920x1080", or "nothing" for an empty list.
 std::string describe_offer(const std::vector<OfferedFormat>& offered);
-// For `puddle --check`: opens the device at `path`, lists what it offers ("YUYV 640x480; MJPG ...")
-// and closes it again; an error names the path and the reason.
-Result<std::string> describe_device(V4l2Io& io, const std::string& path);
+// For `puddle --check`: opens the device at `path`, enumerates what it offers and closes it again; an
+// error names the path and the reason. Empty for a node that captures nothing (a codec, a metadata node).
+Result<std::vector<OfferedFormat>> device_offer(V4l2Io& io, const std::string& path);
 
 }  // namespace puddle::camera

@@ -34,15 +34,19 @@ TEST(FormatNegotiation, EnumeratesFormatsAndSizes) {
     dev.close(fd);
 }
 
-TEST(FormatNegotiation, DescribeDeviceListsTheOfferAndClosesTheDevice) {
+TEST(FormatNegotiation, DeviceOfferListsTheFormatsAndClosesTheDevice) {
     FakeV4l2Device dev;
     dev.formats = {{V4L2_PIX_FMT_NV12, {{320, 240}}}};
-    auto text = describe_device(dev, "/dev/video0");
-    ASSERT_TRUE(text) << text.error().message;
-    EXPECT_EQ(*text, "NV12 320x240");
+    auto offer = device_offer(dev, "/dev/video0");
+    ASSERT_TRUE(offer) << offer.error().message;
+    EXPECT_EQ(describe_offer(*offer), "NV12 320x240");
     EXPECT_EQ(dev.open_fds(), 0);
+    dev.formats.clear();  // a node that captures nothing: no error, an empty offer
+    auto none = device_offer(dev, "/dev/video0");
+    ASSERT_TRUE(none) << none.error().message;
+    EXPECT_TRUE(none->empty());
     dev.unplug();
-    auto gone = describe_device(dev, "/dev/video0");
+    auto gone = device_offer(dev, "/dev/video0");
     ASSERT_FALSE(gone);
     EXPECT_NE(gone.error().message.find("/dev/video0: cannot open"), std::string::npos) << gone.error().message;
 }
