@@ -9,7 +9,8 @@
 
 namespace puddle::camera {
 
-// `rgb`: width * height * 3 bytes, rows top first. `quality`: 1 to 100, as libjpeg takes it.
+// `rgb`: width * height * 3 bytes, rows top first. `quality`: 1 to 100, as libjpeg takes it. Empty when
+// the sizes do not fit the pixels.
 std::vector<std::byte> encode_jpeg(std::span<const std::uint8_t> rgb, int width, int height, int quality);
 
 }  // namespace puddle::camera
