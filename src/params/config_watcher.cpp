@@ -27,7 +27,9 @@ bool is_link(const fs::path& p) {
 
 Result<ConfigWatcher> ConfigWatcher::watch(const std::string& path) {
     const int fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-    if (fd < 0) return make_error(ExitCode::Runtime, "config: cannot watch {}: inotify: {}", path, std::strerror(errno));
+    if (fd < 0)
+        return make_error(ExitCode::Runtime, "config: cannot watch {}: inotify: {}", path,
+                          std::strerror(errno));
     ConfigWatcher w(fd, fs::absolute(path).lexically_normal().string());
     if (auto r = w.rewatch(); !r) return r.error();
     return w;
@@ -36,7 +38,8 @@ Result<ConfigWatcher> ConfigWatcher::watch(const std::string& path) {
 // Follows the chain of links from the path as given and watches the folder of each step. Watches on
 // one folder share a descriptor; dropping the old ones first keeps the kernel's count bounded.
 Result<void> ConfigWatcher::rewatch() {
-    for (const Link& l : chain_) inotify_rm_watch(fd_, l.wd);  // a shared descriptor fails the second time: fine
+    for (const Link& l : chain_)
+        inotify_rm_watch(fd_, l.wd);  // a shared descriptor fails the second time: fine
     chain_.clear();
     fs::path p = path_;
     for (int hop = 0; hop <= max_links; ++hop) {
@@ -52,7 +55,8 @@ Result<void> ConfigWatcher::rewatch() {
         if (ec) return {};  // replaced between the two looks: the next event resolves it again
         p = (folder / target).lexically_normal();
     }
-    return make_error(ExitCode::Runtime, "config: {}: more than {} symbolic links in a row", path_, max_links);
+    return make_error(ExitCode::Runtime, "config: {}: more than {} symbolic links in a row", path_,
+                      max_links);
 }
 
 ConfigWatcher::ConfigWatcher(ConfigWatcher&& other) noexcept
@@ -88,9 +92,12 @@ ConfigWatcher::Change ConfigWatcher::poll() {
             for (const Link& l : chain_) {
                 if (l.wd != e->wd || l.name != e->name) continue;
                 // The last event of a batch tells the state: a write after a removal is a new file.
-                if (e->mask & (IN_CLOSE_WRITE | IN_MOVED_TO)) change = Change::Written;
-                else if (e->mask & (IN_DELETE | IN_MOVED_FROM)) change = Change::Removed;
-                else if ((e->mask & IN_CREATE) && is_link(fs::path(l.folder) / l.name)) change = Change::Written;
+                if (e->mask & (IN_CLOSE_WRITE | IN_MOVED_TO))
+                    change = Change::Written;
+                else if (e->mask & (IN_DELETE | IN_MOVED_FROM))
+                    change = Change::Removed;
+                else if ((e->mask & IN_CREATE) && is_link(fs::path(l.folder) / l.name))
+                    change = Change::Written;
                 break;
             }
         }

@@ -1,5 +1,7 @@
 // inotify on the config's folder: in-place writes, editors' rename-over, delete and re-create, and
 // configs that are symbolic links (the target edited, the link re-pointed, chains of links).
+#include "params/config_watcher.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -7,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "params/config_watcher.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::params {
@@ -62,11 +63,14 @@ struct LinkedConfig {
         std::filesystem::create_directories(etc);
         std::filesystem::create_directories(opt);
         std::ofstream(target) << "[rain]\n";
-        std::filesystem::create_symlink("../../opt/signage/puddle.toml", link);  // relative, as ln -s makes them
+        std::filesystem::create_symlink("../../opt/signage/puddle.toml",
+                                        link);  // relative, as ln -s makes them
     }
 };
 
-void write_file(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
+void write_file(const std::filesystem::path& p, const std::string& text) {
+    std::ofstream(p) << text;
+}
 
 // `ln -sfn NEW LINK`, run as a person would.
 void repoint(const std::filesystem::path& link, const std::string& new_target) {
