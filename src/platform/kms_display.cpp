@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "platform/display.hpp"
+#include "platform/drm_inventory.hpp"
 #include "platform/egl_context.hpp"
 
 namespace puddle::platform {
@@ -84,30 +85,6 @@ Result<UniqueFd> open_card(const std::string& path) {
 }
 
 // /dev/dri/card0, card1, ... in numeric order (card10 after card2).
-std::vector<std::string> list_cards() {
-    std::vector<std::pair<int, std::string>> cards;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", ec)) {
-        const std::string name = entry.path().filename().string();
-        if (!name.starts_with("card")) continue;
-        int number = 0;
-        const char* digits = name.data() + 4;
-        const auto [end, err] = std::from_chars(digits, name.data() + name.size(), number);
-        if (err != std::errc{} || end != name.data() + name.size()) continue;
-        cards.emplace_back(number, entry.path().string());
-    }
-    std::sort(cards.begin(), cards.end());
-    std::vector<std::string> paths;
-    for (auto& card : cards) paths.push_back(std::move(card.second));
-    return paths;
-}
-
-// "HDMI-A-1", "DP-2", "Virtual-1": the names the kernel and xrandr use.
-std::string connector_name(const drmModeConnector& c) {
-    const char* type = drmModeGetConnectorTypeName(c.connector_type);
-    return fmt::format("{}-{}", type ? type : "Unknown", c.connector_type_id);
-}
-
 std::vector<ConnectorPtr> get_connectors(int fd, const drmModeRes& res) {
     std::vector<ConnectorPtr> connectors;
     for (int i = 0; i < res.count_connectors; ++i)
@@ -141,10 +118,6 @@ std::optional<std::string> check_card(const std::string& path, std::string& conn
         return fmt::format("{}: held by another process (is a desktop running?)", path);
     drmDropMaster(fd->get());
     return std::nullopt;
-}
-
-std::string mode_name(const drmModeModeInfo& m) {
-    return fmt::format("{}x{}@{}", m.hdisplay, m.vdisplay, m.vrefresh);
 }
 
 struct ModeSpec {
@@ -561,7 +534,7 @@ Result<void> KmsDisplay::present() {
 
 KmsProbe probe_kms(const std::string& preferred_card) {
     const std::vector<std::string> cards =
-        preferred_card.empty() ? list_cards() : std::vector{preferred_card};
+        preferred_card.empty() ? drm_card_paths() : std::vector{preferred_card};
     if (cards.empty()) return {"", "no /dev/dri/card* devices"};
     std::vector<std::string> reasons;
     for (const std::string& card : cards) {
