@@ -1,9 +1,9 @@
 #pragma once
 // Bounds on every TOML file Puddle reads (the config, presets, the saved state), checked on the raw text
-// before toml++ sees it. toml++ recurses once per level of a dotted key or table header and has no limit
-// of its own there: `a.a.a. ... .a = 1` 50 000 levels deep overflows the stack (SIGSEGV). The limits are
-// far above what a real config needs (its deepest value is a [[knob]] key at 3 levels, its longest key 22
-// bytes, the shipped config 15 KiB), so only a broken or hostile file meets them.
+// before toml++ sees it. toml++ 3.3 bounds nested arrays and inline tables (TOML_MAX_NESTED_VALUES) but
+// not dotted keys or table headers: `a.a.a. ... .a = 1` 50 000 levels deep overflows the stack (SIGSEGV).
+// The limits are far above what a real config needs (its deepest value is a [[knob]] key at 3 levels, its
+// longest key under 20 bytes, the shipped config 14 KiB), so only a broken or hostile file meets them.
 
 #include <cstddef>
 #include <string>
