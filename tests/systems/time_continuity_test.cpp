@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "support/test_support.hpp"
 #include "systems/frame_clock.hpp"
@@ -38,7 +38,7 @@ constexpr double margin = 2.0;
 
 struct Look {
     const char* name;
-    std::initializer_list<std::string> sets;
+    std::vector<std::string> sets;
     double dt = frame;  // the frames compared are 2 dt apart
 };
 
@@ -46,7 +46,7 @@ const Look ocean{"ocean", {"scene.kind=ocean"}};
 const Look street{"street", {"scene.kind=street"}};
 // The rain overlay over a sea that stands still (ocean.speed = 0), so only the streaks move. A streak
 // falls a quarter of its cell in two frames, about as far as a jump moves it, so frames a tenth of a
-// frame apart tell a jump from a fall. The grid's rings likewise: half the cells jump, and only a little.
+// frame apart tell a jump from a fall. The grid's thin rings likewise (at a jump every drop moves).
 const Look rain{"rain overlay", {"scene.kind=ocean", "ocean.speed=0", "overlay.rain=true"}, frame / 10};
 const Look grid{
     "grid drops", {"drops.model=grid", "grid.cycle=0.1", "grid.drops_per_second=2000"}, frame / 10};
