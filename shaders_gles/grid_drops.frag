@@ -14,7 +14,7 @@ precision highp int;
 #endif
 
 uniform float u_cell_texels;   // cell size in field texels
-uniform int u_cycle_base;      // floor(time / grid.cycle), split on the CPU for precision
+uniform int u_cycle_base;      // floor(time / grid.cycle) modulo 2^32 (a uint's bits), split on the CPU
 uniform float u_cycle_fraction;
 uniform int u_seed;
 uniform ivec2 u_only_cell;     // tests: only this cell's drop (x < 0: every cell)
@@ -36,7 +36,7 @@ float height(vec2 p) {  // p in cells
             if (u_only_cell.x >= 0 && cell != u_only_cell) continue;
             uint id = hash3(uint(cell.x), uint(cell.y), uint(u_seed));
             float s = u_cycle_fraction + unit_float(mix_bits(id));  // the cell's own time offset
-            uint cycle = uint(u_cycle_base + int(floor(s)));
+            uint cycle = uint(u_cycle_base) + uint(floor(s));  // uint: wraps at 2^32 like the CPU's count
             float age = fract(s);  // 0..1 over the cycle
             vec2 drop = vec2(cell) + vec2(unit_float(hash3(id, cycle, 1u)), unit_float(hash3(id, cycle, 2u)));
             float u = (distance(p, drop) - 0.5 * age) / u_grid_ring_width;

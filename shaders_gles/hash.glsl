@@ -29,3 +29,18 @@ float value_noise(vec2 p, uint salt) {
     float e = hash_cell(c + ivec2(1, 1), salt);
     return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
 }
+
+// value_noise(p + vec2(cells)) for a pattern scrolled by `cells` whole lattice cells plus the small p.
+// A scroll that grows with time is split that way on the CPU (systems/shader_phase.hpp): the whole
+// cells are added to the lattice exactly, as the bits of the uint the hash takes (wrapping at 2^32 cells
+// like the CPU's count), so p keeps its precision however far the pattern has moved.
+float scrolled_value_noise(vec2 p, ivec2 cells, uint salt) {
+    vec2 f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    uvec2 c = uvec2(ivec2(floor(p))) + uvec2(cells);
+    float a = unit_float(hash3(c.x, c.y, salt));
+    float b = unit_float(hash3(c.x + 1u, c.y, salt));
+    float d = unit_float(hash3(c.x, c.y + 1u, salt));
+    float e = unit_float(hash3(c.x + 1u, c.y + 1u, salt));
+    return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
+}

@@ -10,7 +10,6 @@ precision highp int;
 in vec2 v_uv;
 out vec4 o_color;
 
-uniform float u_time;          // seconds, wrapped on the CPU to keep float precision
 uniform vec3 u_cam_forward;
 uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;
@@ -19,11 +18,10 @@ uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1)
 uniform vec3 u_ocean_camera_position;
 uniform vec3 u_ocean_sea_color;
 uniform float u_ocean_choppiness;
-uniform float u_ocean_speed;
 uniform int u_ocean_octaves;
 uniform float u_ocean_height;
 
-const int MAX_OCTAVES = 8;
+const int MAX_OCTAVES = 8;  // ocean.octaves' maximum
 const int MARCH_STEPS = 200;
 const float MARCH_EPSILON = 1e-4;
 const float NORMAL_EPSILON = 1e-3;
@@ -32,9 +30,18 @@ const vec3 SUN = vec3(0.57735027);  // normalize(1, 1, 1)
 const vec3 BACK_LIGHT = vec3(0.52, 0.42, 0.34);
 const mat2 OCTAVE_ROTATION = mat2(0.70710678, 0.70710678, -0.70710678, 0.70710678);  // 45 degrees
 
-// One choppy octave: offset by noise of itself, then sharpen the crests by the choppiness power.
-float choppy_wave(vec2 uv, float choppy) {
-    uv += value_noise(uv, 7u) * 2.0 - 1.0;
+// Per octave, how far time has moved its two travelling terms, computed on the CPU in double
+// (systems/ocean_system.hpp), so the sea is continuous and precise for as long as the display runs:
+// u_octave_shift is (fraction of a noise cell, sine phase modulo pi) of the forward term, then of the
+// backward one; u_octave_cells the whole noise cells of each (the bits of a uint).
+uniform vec4 u_octave_shift[MAX_OCTAVES];
+uniform ivec2 u_octave_cells[MAX_OCTAVES];
+
+// One choppy octave at q, moved by time: offset by noise of itself, then sharpen the crests by the
+// choppiness power. The noise moves by cells + fraction; |sin| and |cos| repeat every pi, so they move
+// by the phase alone.
+float choppy_wave(vec2 q, int cells, float fraction, float phase, float choppy) {
+    vec2 uv = q + phase + scrolled_value_noise(q + fraction, ivec2(cells), 7u) * 2.0 - 1.0;
     vec2 a = 1.0 - abs(sin(uv));
     vec2 b = abs(cos(uv));
     vec2 s = mix(a, b, a);
@@ -42,7 +49,6 @@ float choppy_wave(vec2 uv, float choppy) {
 }
 
 float sea_height(vec2 p, int octaves) {
-    float t = u_time * u_ocean_speed;
     float frequency = 0.16;
     float amplitude = u_ocean_height;
     float choppy = u_ocean_choppiness;
@@ -50,7 +56,11 @@ float sea_height(vec2 p, int octaves) {
     float h = 0.0;
     for (int i = 0; i < MAX_OCTAVES; ++i) {
         if (i >= octaves) break;
-        float d = choppy_wave((uv + t) * frequency, choppy) + choppy_wave((uv - 0.8 * t) * frequency, choppy);
+        // The reference's (uv + t) * frequency and (uv - 0.8 t) * frequency, with t's part from the CPU.
+        vec2 q = uv * frequency;
+        vec4 shift = u_octave_shift[i];
+        float d = choppy_wave(q, u_octave_cells[i].x, shift.x, shift.y, choppy) +
+                  choppy_wave(q, u_octave_cells[i].y, shift.z, shift.w, choppy);
         h += d * amplitude;
         uv = OCTAVE_ROTATION * uv + vec2(100.0, 0.0);
         frequency *= 2.0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "systems/param_uniforms.hpp"
 #include "systems/scene_select.hpp"
@@ -37,7 +38,9 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
     pass.set_pipeline(grid.pass.pipeline);
     set_param_uniforms(pass, params);
     pass.set("u_cell_texels", grid_cell_texels(params, surface.resolution))
-        .set("u_cycle_base", static_cast<int>(std::fmod(base, 2147483648.0)))
+        // Modulo 2^32, handed over as the bits of the shader's uint: its uint sum with the cell's own
+        // cycle then wraps exactly where this count does, so no drop jumps at any uptime.
+        .set("u_cycle_base", static_cast<int>(static_cast<std::uint32_t>(std::fmod(base, 4294967296.0))))
         .set("u_cycle_fraction", static_cast<float>(cycles - base))
         .set("u_seed", params.i(ParamId::rain_seed))
         .set("u_only_cell", only_cell);

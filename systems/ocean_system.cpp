@@ -1,10 +1,12 @@
 #include "systems/ocean_system.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 #include "systems/camera_basis.hpp"
 #include "systems/param_uniforms.hpp"
 #include "systems/scene_select.hpp"
+#include "systems/shader_phase.hpp"
 
 namespace puddle::systems {
 
@@ -15,6 +17,19 @@ gpu::PipelineDesc ocean_desc() {
     return {.label = "ocean", .fragment = "ocean.frag"};
 }
 }  // namespace
+
+OceanTime ocean_time(double seconds, double speed) {
+    OceanTime ot;
+    double frequency = 0.16;  // ocean.frag's octave 0
+    for (std::size_t i = 0; i < ot.shift.size(); ++i, frequency *= 2.0) {
+        const double forward = speed * frequency, backward = -0.8 * forward;
+        const LatticeShift f = lattice_shift(seconds, forward), b = lattice_shift(seconds, backward);
+        ot.shift[i] = {f.fraction, periodic_phase(seconds, forward, std::numbers::pi), b.fraction,
+                       periodic_phase(seconds, backward, std::numbers::pi)};
+        ot.cells[i] = {f.cells, b.cells};
+    }
+    return ot;
+}
 
 Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean) {
     return ocean.pass.ensure(device, ocean_desc);
@@ -32,7 +47,9 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(ocean.pass.pipeline);
     set_param_uniforms(pass, params);
-    pass.set("u_time", shader_time(clock.sim_time))
+    const OceanTime ot = ocean_time(clock.sim_time, params.f(ParamId::ocean_speed));
+    pass.set("u_octave_shift", std::span<const glm::vec4>(ot.shift))
+        .set("u_octave_cells", std::span<const glm::ivec2>(ot.cells))
         .set("u_cam_forward", cam.forward)
         .set("u_cam_right", cam.right)
         .set("u_cam_up", cam.up)

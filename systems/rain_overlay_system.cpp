@@ -1,7 +1,7 @@
 #include "systems/rain_overlay_system.hpp"
 
 #include "systems/param_uniforms.hpp"
-#include "systems/scene_select.hpp"
+#include "systems/shader_phase.hpp"
 
 namespace puddle::systems {
 
@@ -12,6 +12,13 @@ gpu::PipelineDesc rain_desc() {
     return {.label = "rain streaks", .fragment = "rain_streaks.frag", .blend = gpu::Blend::Alpha};
 }
 }  // namespace
+
+glm::vec4 rain_layer_falls(double seconds, double speed) {
+    glm::vec4 falls{};
+    for (int i = 0; i < 4; ++i)
+        falls[i] = periodic_phase(seconds, speed * rain_layer_speeds[static_cast<std::size_t>(i)], 1.0);
+    return falls;
+}
 
 Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) {
     return rain.pass.ensure(device, rain_desc);
@@ -25,7 +32,7 @@ void rain_overlay_system(gpu::Device& device, const params::Params& params, cons
     auto pass = device.begin_pass({.label = "rain streaks", .target = frame, .load = gpu::LoadOp::Load});
     pass.set_pipeline(rain.pass.pipeline);
     set_param_uniforms(pass, params);
-    pass.set("u_time", shader_time(clock.sim_time))
+    pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.f(ParamId::overlay_rain_speed)))
         .set("u_resolution", glm::vec2(frame.size))
         .set("u_seed", params.i(ParamId::rain_seed));
     pass.draw_fullscreen();

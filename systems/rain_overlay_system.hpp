@@ -1,6 +1,10 @@
 #pragma once
 // Rain streaks (REFERENCE.md section 3's four parallax layers) blended over whatever scene was drawn,
 // when overlay.rain = true. Runs after the scene passes, before present.
+//
+// A layer's streaks fall at its own speed times overlay.rain_speed, in cells per second, and the fall
+// repeats every cell: the shader gets each layer's fall modulo 1, computed here in double
+// (systems/shader_phase.hpp), so the rain is continuous at any uptime.
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -9,6 +13,15 @@
 #include "systems/render_system.hpp"
 
 namespace puddle::systems {
+
+#include <array>
+#include <glm/vec4.hpp>
+
+// Fall speeds of rain_streaks.frag's four layers, far to near, in cells per second.
+inline constexpr std::array<double, 4> rain_layer_speeds{1.8, 2.5, 3.2, 3.8};
+
+// Each layer's fall at `seconds` for overlay.rain_speed `speed`: cells modulo 1.
+glm::vec4 rain_layer_falls(double seconds, double speed);
 
 // Resource.
 struct RainOverlay {

@@ -1,7 +1,5 @@
 #include "systems/scene_select.hpp"
 
-#include <cmath>
-
 namespace puddle::systems {
 
 using params::ParamId;
@@ -18,10 +16,6 @@ DropModel selected_drop_model(const params::Params& params) {
     if (s == "analytic") return DropModel::Analytic;
     if (s == "grid") return DropModel::Grid;
     return DropModel::Pulse;
-}
-
-float shader_time(double seconds) {
-    return static_cast<float>(std::fmod(seconds, 4096.0));
 }
 
 }  // namespace puddle::systems

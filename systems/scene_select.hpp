@@ -12,9 +12,4 @@ enum class DropModel { Pulse, Analytic, Grid };
 Scene selected_scene(const params::Params& params);
 DropModel selected_drop_model(const params::Params& params);
 
-// Simulated time for a shader's float uniform: wrapped every 4096 s, where a float still resolves
-// half a millisecond (unwrapped, a month of uptime would leave steps of a quarter second). The
-// looping techniques (ocean, street, rain) jump once per wrap, about every 68 minutes.
-float shader_time(double seconds);
-
 }  // namespace puddle::systems

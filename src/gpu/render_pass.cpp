@@ -84,6 +84,24 @@ RenderPass& RenderPass::set(std::string_view name, const glm::mat3& v) {
     glUniformMatrix3fv(pipeline_->location(name), 1, GL_FALSE, glm::value_ptr(v));
     return *this;
 }
+RenderPass& RenderPass::set(std::string_view name, std::span<const float> v) {
+    glUniform1fv(pipeline_->location(name), static_cast<GLsizei>(v.size()), v.data());
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, std::span<const int> v) {
+    glUniform1iv(pipeline_->location(name), static_cast<GLsizei>(v.size()), v.data());
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, std::span<const glm::ivec2> v) {
+    glUniform2iv(pipeline_->location(name), static_cast<GLsizei>(v.size()),
+                 reinterpret_cast<const GLint*>(v.data()));
+    return *this;
+}
+RenderPass& RenderPass::set(std::string_view name, std::span<const glm::vec4> v) {
+    glUniform4fv(pipeline_->location(name), static_cast<GLsizei>(v.size()),
+                 reinterpret_cast<const GLfloat*>(v.data()));
+    return *this;
+}
 
 void RenderPass::draw_fullscreen() { glDrawArrays(GL_TRIANGLES, 0, 3); }
 

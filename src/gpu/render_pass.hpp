@@ -3,6 +3,7 @@
 // glClear; StoreOp::Discard is glInvalidateFramebuffer (cheap on tiled mobile GPUs). Begun by
 // Device::begin_pass; ended by end() or the destructor.
 
+#include <span>
 #include <string_view>
 
 #include <glm/mat3x3.hpp>
@@ -50,6 +51,11 @@ public:
     RenderPass& set(std::string_view name, glm::vec3 v);
     RenderPass& set(std::string_view name, glm::vec4 v);
     RenderPass& set(std::string_view name, const glm::mat3& v);
+    // Arrays, from element 0: elements past the shader's array size are ignored (GLES 3.0 section 2.12.6).
+    RenderPass& set(std::string_view name, std::span<const float> v);
+    RenderPass& set(std::string_view name, std::span<const int> v);
+    RenderPass& set(std::string_view name, std::span<const glm::ivec2> v);
+    RenderPass& set(std::string_view name, std::span<const glm::vec4> v);
     // One triangle covering the target; the vertex shader makes it from gl_VertexID.
     void draw_fullscreen();
     void end();
