@@ -6,11 +6,8 @@
 #include <cstddef>
 #include <span>
 
-#include "assets/environment_images.hpp"
 #include "assets/image_io.hpp"
 #include "assets/procedural_ground.hpp"
-#include "assets/rgbm.hpp"
-#include "systems/equirect_to_cube.hpp"
 
 namespace puddle::systems {
 
@@ -22,95 +19,10 @@ int mip_count(int size) {
     return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
 }
 
-struct CubeFormat {
-    gpu::TextureFormat format;
-    bool rgbm;
-};
-
-// HDR wants half floats; their mipmaps need half-float render targets, so without those it is RGBM in RGBA8.
-CubeFormat cube_format(const gpu::Capabilities& caps, bool hdr) {
-    if (!hdr) return {gpu::TextureFormat::SRGB8_A8, false};
-    if (caps.half_float_render_targets) return {gpu::TextureFormat::RGBA16F, false};
-    return {gpu::TextureFormat::RGBA8, true};
-}
-
-gpu::Texture upload_faces(gpu::Device& device, assets::CubeImages& cube, CubeFormat f) {
-    while (cube.faces[0].width > device.caps().max_cube_map_size)
-        for (assets::Image& face : cube.faces) face = assets::halve(face);
-    const int size = cube.faces[0].width;
-    gpu::Texture texture = device.create_texture({.label = "environment",
-                                                  .kind = gpu::TextureKind::Cube,
-                                                  .format = f.format,
-                                                  .width = size,
-                                                  .height = size,
-                                                  .mip_levels = mip_count(size)});
-    for (std::size_t face = 0; face < 6; ++face) {
-        if (!f.rgbm) {
-            texture.upload(std::as_bytes(std::span(cube.faces[face].data)), 0, static_cast<int>(face));
-            continue;
-        }
-        // RGBM texels cannot be averaged by glGenerateMipmap: each level from linear averages here.
-        assets::Image level_image = cube.faces[face];
-        for (int level = 0; level < texture.desc().mip_levels; ++level) {
-            if (level > 0) level_image = assets::halve(level_image);
-            const assets::Image encoded = assets::encode_rgbm(level_image);
-            texture.upload(std::as_bytes(std::span(encoded.data)), level, static_cast<int>(face));
-        }
-    }
-    if (!f.rgbm) texture.generate_mipmaps();
-    return texture;
-}
-
-}  // namespace
-
-Result<void> load_environment(gpu::Device& device, const params::Params& params, Environment& env) {
-    auto images = assets::load_environment_images(params.s(ParamId::environment_image));
-    if (!images) return images.error();
-    const CubeFormat f = cube_format(device.caps(), images->hdr());
-
-    Environment e;
-    e.source = images->source;
-    e.hdr = images->hdr();
-    e.rgbm = f.rgbm;
-    if (images->faces) {
-        e.cube = upload_faces(device, *images->faces, f);
-    } else {
-        const int asked = params.i(ParamId::environment_face_size);
-        const int max_size = device.caps().max_cube_map_size;
-        if (asked > max_size)
-            spdlog::warn("environment.face_size: {} is more than this GPU's largest cube map; using {}",
-                         asked, max_size);
-        const int size =
-            asked > 0 ? std::min(asked, max_size) : auto_face_size(images->panorama.width, max_size);
-        auto cube = equirect_to_cube(device, images->panorama, size, f.format, f.rgbm);
-        if (!cube) return cube.error();
-        e.cube = std::move(cube).value();
-    }
-    e.sampler = device.create_sampler({.label = "environment", .mipmaps = true, .wrap = gpu::Wrap::Clamp});
-    spdlog::info(
-        "environment: {} ({}x{} faces, {})", e.source, e.cube.width(), e.cube.height(),
-        e.rgbm ? "HDR as RGBM8 (no half-float render targets)" : gpu::format_name(e.cube.desc().format));
-    e.requested_image = params.s(ParamId::environment_image);
-    e.requested_face_size = params.i(ParamId::environment_face_size);
-    env = std::move(e);
-    return {};
-}
-
-Result<void> load_ground(gpu::Device& device, const params::Params& params, Ground& ground) {
-    const std::string& path = params.s(ParamId::ground_image);
-    assets::Image image;
+void upload_ground(gpu::Device& device, PreparedGround prepared, const std::string& path, Ground& ground) {
+    const assets::Image& image = prepared.image;
     Ground g;
-    if (path.empty()) {
-        image = assets::cobblestone_ground(512);
-        g.source = "procedural cobblestones";
-    } else {
-        // An HDR file is stored as sRGB like any other: the ground is lit, never a light.
-        auto loaded = assets::read_color_image(path);
-        if (!loaded) return loaded.error();
-        image = assets::to_srgb8(*loaded);
-        g.source = path;
-    }
-    while (std::max(image.width, image.height) > device.caps().max_texture_size) image = assets::halve(image);
+    g.source = std::move(prepared.source);
     g.texture = device.create_texture({.label = "ground",
                                        .format = gpu::TextureFormat::SRGB8_A8,
                                        .width = image.width,
@@ -123,6 +35,79 @@ Result<void> load_ground(gpu::Device& device, const params::Params& params, Grou
         {.label = "ground", .mipmaps = true, .wrap = gpu::Wrap::Repeat, .anisotropy = 8.0f});
     g.requested_image = path;
     ground = std::move(g);
+}
+
+// A new sky asked for: decoded on the worker; the old one stays on screen meanwhile.
+void start_environment_reload(const gpu::Device& device, const params::Params& params, Environment& env,
+                              EnvironmentReload& reload) {
+    env.requested_image = params.s(ParamId::environment_image);
+    env.requested_face_size = params.i(ParamId::environment_face_size);
+    reload.environment_build.reset();  // a half-built older one is dropped
+    const EnvironmentRequest request = EnvironmentRequest::from(params, device.caps());
+    reload.environment.submit([request](std::stop_token stop) { return prepare_environment(request, stop); });
+    spdlog::info("environment: loading {} (showing {} until it is ready)",
+                 request.image.empty() ? "the procedural night sky" : request.image, env.source);
+}
+
+void continue_environment_reload(gpu::Device& device, Environment& env, EnvironmentReload& reload) {
+    if (auto prepared = reload.environment.take()) {
+        if (!*prepared) {
+            spdlog::error("{} (keeping {})", prepared->error().message, env.source);
+            return;
+        }
+        reload.environment_build.emplace(std::move(prepared->value()));
+    }
+    if (!reload.environment_build) return;
+    auto done = reload.environment_build->step(device);
+    if (!done) {
+        spdlog::error("{} (keeping {})", done.error().message, env.source);
+        reload.environment_build.reset();
+    } else if (*done) {
+        reload.environment_build->finish(device, env);
+        reload.environment_build.reset();
+    }
+}
+
+}  // namespace
+
+Result<void> load_environment(gpu::Device& device, const params::Params& params, Environment& env) {
+    auto prepared = prepare_environment(EnvironmentRequest::from(params, device.caps()));
+    if (!prepared) return prepared.error();
+    EnvironmentBuild build(std::move(prepared).value());
+    for (;;) {
+        auto done = build.step(device);
+        if (!done) return done.error();
+        if (*done) break;
+    }
+    Environment e;
+    build.finish(device, e);
+    e.requested_image = params.s(ParamId::environment_image);
+    e.requested_face_size = params.i(ParamId::environment_face_size);
+    env = std::move(e);
+    return {};
+}
+
+Result<PreparedGround> prepare_ground(const std::string& path, int max_texture_size) {
+    PreparedGround g;
+    if (path.empty()) {
+        g.image = assets::cobblestone_ground(512);
+        g.source = "procedural cobblestones";
+    } else {
+        // An HDR file is stored as sRGB like any other: the ground is lit, never a light.
+        auto loaded = assets::read_color_image(path);
+        if (!loaded) return loaded.error();
+        g.image = assets::to_srgb8(*loaded);
+        g.source = path;
+    }
+    while (std::max(g.image.width, g.image.height) > max_texture_size) g.image = assets::halve(g.image);
+    return g;
+}
+
+Result<void> load_ground(gpu::Device& device, const params::Params& params, Ground& ground) {
+    const std::string& path = params.s(ParamId::ground_image);
+    auto prepared = prepare_ground(path, device.caps().max_texture_size);
+    if (!prepared) return prepared.error();
+    upload_ground(device, std::move(prepared).value(), path, ground);
     return {};
 }
 
@@ -130,20 +115,25 @@ void environment_reload_system(ecs::World& world) {
     const params::Params& params = world.resource<params::Params>();
     auto& device = world.resource<gpu::Device>();
     auto& env = world.resource<Environment>();
+    auto& reload = world.resource<EnvironmentReload>();
     if (params.s(ParamId::environment_image) != env.requested_image ||
-        params.i(ParamId::environment_face_size) != env.requested_face_size) {
-        if (auto r = load_environment(device, params, env); !r) {
-            spdlog::error("{} (keeping {})", r.error().message, env.source);
-            env.requested_image = params.s(ParamId::environment_image);
-            env.requested_face_size = params.i(ParamId::environment_face_size);
-        }
-    }
+        params.i(ParamId::environment_face_size) != env.requested_face_size)
+        start_environment_reload(device, params, env, reload);
+    continue_environment_reload(device, env, reload);
+
     auto& ground = world.resource<Ground>();
     if (params.s(ParamId::ground_image) != ground.requested_image) {
-        if (auto r = load_ground(device, params, ground); !r) {
-            spdlog::error("{} (keeping {})", r.error().message, ground.source);
-            ground.requested_image = params.s(ParamId::ground_image);
-        }
+        ground.requested_image = params.s(ParamId::ground_image);
+        const int max_size = device.caps().max_texture_size;
+        reload.ground.submit([path = ground.requested_image, max_size](std::stop_token) {
+            return prepare_ground(path, max_size);
+        });
+    }
+    if (auto prepared = reload.ground.take()) {
+        if (!*prepared)
+            spdlog::error("{} (keeping {})", prepared->error().message, ground.source);
+        else
+            upload_ground(device, std::move(prepared->value()), ground.requested_image, ground);
     }
 }
 

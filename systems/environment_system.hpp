@@ -3,14 +3,20 @@
 // names, or made procedurally, with mipmaps. 8-bit images upload as sRGB textures (the sampler decodes
 // them to linear); HDR images stay linear: a half-float cube where the GPU can render into one (its
 // mipmaps need that), else RGBM RGBA8 that the puddle pass decodes. Start-up failures are errors
-// with exit code 3; a change of environment.image, environment.face_size or ground.image at run time
-// reloads, and a failed reload logs one line and keeps what is shown.
+// with exit code 3. A change of environment.image, environment.face_size or ground.image at run time
+// reloads without stopping the frames: the files are read and decoded on a worker thread, the sky's GPU
+// half runs in bounded steps on the frame thread (environment_build.hpp), and what is shown changes in
+// one frame once the new one is complete. A failed reload logs one line and keeps what is shown.
 
+#include <optional>
 #include <string>
 
+#include "assets/image.hpp"
 #include "ecs/world.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "systems/environment_build.hpp"
+#include "util/background_job.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {
@@ -36,10 +42,30 @@ struct Ground {
     std::string requested_image;
 };
 
+// The ground's CPU half: the image read, as sRGB, halved until the GPU takes it.
+struct PreparedGround {
+    assets::Image image;
+    std::string source;
+};
+Result<PreparedGround> prepare_ground(const std::string& path, int max_texture_size);
+
+// Resource: live reloads in progress. At most one of each is decoded at a time; a newer change of the
+// parameters makes an older one's result stale (it is dropped, never shown).
+struct EnvironmentReload {
+    BackgroundJob<Result<PreparedEnvironment>> environment;
+    std::optional<EnvironmentBuild> environment_build;
+    BackgroundJob<Result<PreparedGround>> ground;
+
+    // True while a new sky or ground is being read, decoded or built.
+    bool pending() const { return environment.busy() || environment_build.has_value() || ground.busy(); }
+};
+
+// Start-up: all of it at once, on this thread.
 Result<void> load_environment(gpu::Device& device, const params::Params& params, Environment& env);
 Result<void> load_ground(gpu::Device& device, const params::Params& params, Ground& ground);
 
-// Input stage: reloads the environment or the ground when their parameters change.
+// Input stage: starts a reload when the parameters change, takes finished decodes, does one step of a
+// sky's GPU build and shows what is complete.
 void environment_reload_system(ecs::World& world);
 
 }  // namespace puddle::systems

@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <span>
 
+#include "systems/banded_upload.hpp"
+
 namespace puddle::systems {
 namespace {
 
@@ -20,76 +22,127 @@ int auto_face_size(int panorama_width, int max_cube_size) {
     return std::clamp(panorama_width / 4, 1, std::min(1024, max_cube_size));
 }
 
-Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& source, int face_size,
-                                      gpu::TextureFormat format, bool rgbm) {
-    // A panorama wider than the GPU takes is shrunk first (8k and 16k panoramas exist; many GPUs stop at 4k).
-    const assets::Image* panorama = &source;
-    assets::Image shrunk;
-    while (panorama->width > device.caps().max_texture_size) {
-        shrunk = assets::halve(*panorama);
-        panorama = &shrunk;
-    }
-    if (panorama != &source)
+std::vector<assets::Image> panorama_mip_chain(assets::Image panorama, int max_texture_size,
+                                              std::stop_token stop) {
+    const int width = panorama.width, height = panorama.height;
+    while (panorama.width > max_texture_size && !stop.stop_requested()) panorama = assets::halve(panorama);
+    if (panorama.width != width)
         spdlog::info("environment: panorama shrunk from {}x{} to {}x{} (the GPU's largest texture is {})",
-                     source.width, source.height, panorama->width, panorama->height,
-                     device.caps().max_texture_size);
+                     width, height, panorama.width, panorama.height, max_texture_size);
+    std::vector<assets::Image> levels;
+    const bool hdr = panorama.format == assets::PixelFormat::RGBA32F;
+    const int count = hdr ? mip_count(panorama.width) : 1;
+    levels.reserve(static_cast<std::size_t>(count));
+    levels.push_back(std::move(panorama));
+    while (static_cast<int>(levels.size()) < count && !stop.stop_requested())
+        levels.push_back(assets::halve(levels.back()));
+    return levels;
+}
 
-    const bool hdr = panorama->format == assets::PixelFormat::RGBA32F;
-    const int levels = mip_count(panorama->width);
-    gpu::Texture source_texture =
-        device.create_texture({.label = "environment panorama",
-                               .format = hdr ? gpu::TextureFormat::RGBA16F : gpu::TextureFormat::SRGB8_A8,
-                               .width = panorama->width,
-                               .height = panorama->height,
-                               .mip_levels = levels});
-    source_texture.upload(std::as_bytes(std::span(panorama->data)));
-    if (hdr) {
-        // Half floats filter everywhere in GLES 3.0, but the GPU makes their mipmaps only where it can
-        // render into them: average the linear radiance here instead.
-        assets::Image level_image = *panorama;
-        for (int level = 1; level < levels; ++level) {
-            level_image = assets::halve(level_image);
-            source_texture.upload(std::as_bytes(std::span(level_image.data)), level);
+EquirectToCube::EquirectToCube(std::vector<assets::Image> levels, int face_size, gpu::TextureFormat format,
+                               bool rgbm)
+    : levels_(std::move(levels)), face_size_(face_size), format_(format), rgbm_(rgbm) {
+    panorama_width_ = levels_.front().width;
+    panorama_height_ = levels_.front().height;
+    panorama_mips_ = mip_count(panorama_width_);
+}
+
+Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
+    switch (phase_) {
+        case Phase::Upload: {
+            if (!panorama_) {  // a step of its own: the driver may clear a large texture's memory
+                const bool hdr = levels_.front().format == assets::PixelFormat::RGBA32F;
+                panorama_ = device.create_texture(
+                    {.label = "environment panorama",
+                     .format = hdr ? gpu::TextureFormat::RGBA16F : gpu::TextureFormat::SRGB8_A8,
+                     .width = panorama_width_,
+                     .height = panorama_height_,
+                     .mip_levels = panorama_mips_});
+                return false;
+            }
+            assets::Image& level = levels_[uploaded_];
+            if (!upload_next_band(panorama_, level, static_cast<int>(uploaded_), 0, upload_row_,
+                                  texel_budget))
+                return false;
+            level = {};  // the GPU has it now: a large panorama's memory goes back at once
+            upload_row_ = 0;
+            if (++uploaded_ == levels_.size())
+                phase_ = static_cast<int>(uploaded_) < panorama_mips_ ? Phase::Mipmaps : Phase::Pipeline;
+            return false;
         }
-    } else {
-        source_texture.generate_mipmaps();
-    }
-    gpu::Sampler sampler =
-        device.create_sampler({.label = "environment panorama", .mipmaps = true, .wrap = gpu::Wrap::Repeat});
-
-    std::vector<std::string> defines;
-    if (rgbm) defines.emplace_back("OUTPUT_RGBM");
-    auto pipeline = device.create_pipeline({.label = "equirect to cube",
-                                            .fragment = "equirect_to_cube.frag",
-                                            .defines = defines,
-                                            .textures = {"u_panorama"}});
-    if (!pipeline) return pipeline.error();
-
-    gpu::Texture cube = device.create_texture({.label = "environment",
-                                               .kind = gpu::TextureKind::Cube,
-                                               .format = format,
-                                               .width = face_size,
-                                               .height = face_size,
-                                               .mip_levels = mip_count(face_size)});
-    // Every level from the panorama itself, filtered as wide as its texels: RGBM texels cannot be averaged
-    // by the driver's mipmap generation (a bright window next to a dark wall would lose most of its light).
-    for (int level = 0; level < cube.desc().mip_levels; ++level) {
-        const int size = std::max(1, face_size >> level);
-        for (int face = 0; face < 6; ++face) {
+        case Phase::Mipmaps:
+            panorama_.generate_mipmaps();
+            phase_ = Phase::Pipeline;
+            return false;
+        case Phase::Pipeline: {
+            levels_.clear();
+            sampler_ = device.create_sampler(
+                {.label = "environment panorama", .mipmaps = true, .wrap = gpu::Wrap::Repeat});
+            std::vector<std::string> defines;
+            if (rgbm_) defines.emplace_back("OUTPUT_RGBM");
+            auto pipeline = device.create_pipeline({.label = "equirect to cube",
+                                                    .fragment = "equirect_to_cube.frag",
+                                                    .defines = defines,
+                                                    .textures = {"u_panorama"}});
+            if (!pipeline) return pipeline.error();
+            pipeline_ = std::move(pipeline).value();
+            phase_ = Phase::Cube;
+            return false;
+        }
+        case Phase::Cube:
+            cube_ = device.create_texture({.label = "environment",
+                                           .kind = gpu::TextureKind::Cube,
+                                           .format = format_,
+                                           .width = face_size_,
+                                           .height = face_size_,
+                                           .mip_levels = mip_count(face_size_)});
+            phase_ = Phase::Render;
+            return false;
+        case Phase::Render: {
+            // Every level from the panorama itself, filtered as wide as its texels: RGBM texels cannot be
+            // averaged by the driver's mipmap generation (a bright window next to a dark wall would lose
+            // most of its light). A large face goes in bands of rows, one band a step.
+            const int size = std::max(1, face_size_ >> level_);
+            const int rows =
+                static_cast<int>(std::clamp(texel_budget / size, 1L, static_cast<long>(size - row_)));
+            const bool whole = row_ == 0 && rows == size;
             auto pass = device.begin_pass(
                 {.label = "equirect to cube",
-                 .target = {.texture = &cube, .size = {size, size}, .face = face, .level = level},
-                 .load = gpu::LoadOp::DontCare});
-            pass.set_pipeline(*pipeline)
-                .set_texture(0, source_texture, sampler)
-                .set("u_face", face)
+                 .target = {.texture = &cube_, .size = {size, size}, .face = face_, .level = level_},
+                 .load = whole ? gpu::LoadOp::DontCare : gpu::LoadOp::Load,
+                 .rows = {row_, whole ? 0 : rows}});
+            pass.set_pipeline(pipeline_)
+                .set_texture(0, panorama_, sampler_)
+                .set("u_face", face_)
                 .set("u_face_size", static_cast<float>(size))
-                .set("u_panorama_size", glm::vec2(panorama->width, panorama->height))
-                .set("u_max_lod", static_cast<float>(levels - 1));
+                .set("u_panorama_size", glm::vec2(panorama_width_, panorama_height_))
+                .set("u_max_lod", static_cast<float>(panorama_mips_ - 1));
             pass.draw_fullscreen();
+            pass.end();
+            if ((row_ += rows) < size) return false;
+            row_ = 0;
+            if (++face_ < 6) return false;
+            face_ = 0;
+            if (++level_ < cube_.desc().mip_levels) return false;
+            phase_ = Phase::Done;
+            panorama_ = {};
+            return true;
         }
+        case Phase::Done:
+            return true;
     }
-    return cube;
+    return true;
+}
+
+Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& panorama, int face_size,
+                                      gpu::TextureFormat format, bool rgbm) {
+    EquirectToCube conversion(panorama_mip_chain(panorama, device.caps().max_texture_size), face_size, format,
+                              rgbm);
+    for (;;) {
+        auto done = conversion.step(device, static_cast<long>(face_size) * face_size);
+        if (!done) return done.error();
+        if (*done) return conversion.take_cube();
+    }
 }
 
 }  // namespace puddle::systems

@@ -82,6 +82,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
 
     auto& env = world.insert_resource<Environment>();
     if (auto r = load_environment(device, params, env); !r) return r;
+    world.insert_resource<EnvironmentReload>();
     auto& ground = world.insert_resource<Ground>();
     if (auto r = load_ground(device, params, ground); !r) return r;
     spdlog::info("ground: {}", ground.source);

@@ -167,7 +167,7 @@ int run(int argc, const char* const* argv) {
     ServiceNotify service = ServiceNotify::from_environment();
     if (service.enabled())
         spdlog::info("systemd: READY after the first frame{}", service.watchdog_interval() > 0
-                         ? fmt::format(", watchdog every {:g} s while frames are presented", service.watchdog_interval() / 2)
+                         ? fmt::format(", watchdog every {:g} s while frames are presented", service.ping_interval())
                          : std::string());
     using clock = std::chrono::steady_clock;
     const double fixed_dt = 1.0 / (o.fps_cap > 0 ? o.fps_cap : 60.0);

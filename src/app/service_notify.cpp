@@ -71,7 +71,7 @@ void ServiceNotify::frame_presented(double now) {
         send("READY=1\nSTATUS=Showing frames");
         return;
     }
-    if (watchdog_seconds_ > 0 && now - last_ping_ >= watchdog_seconds_ / 2) {
+    if (watchdog_seconds_ > 0 && now - last_ping_ >= ping_interval()) {
         last_ping_ = now;
         send("WATCHDOG=1");
     }

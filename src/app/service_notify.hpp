@@ -1,8 +1,10 @@
 #pragma once
 // The systemd notify protocol (sd_notify), spoken directly: one datagram per message to the socket in
 // $NOTIFY_SOCKET. READY=1 goes out after the first presented frame; WATCHDOG=1 only when frames are
-// really presented, at most every half watchdog period, so a hung GPU or display stops the pings and
-// systemd restarts the service. Without $NOTIFY_SOCKET (not under systemd) every call does nothing.
+// really presented, at most every quarter of the watchdog period, so a hung GPU or display stops the
+// pings and systemd restarts the service. A quarter, not the half sd_watchdog_enabled(3) suggests: then
+// the gap between pings stays under half the period even when one frame takes up to a quarter of it.
+// Without $NOTIFY_SOCKET (not under systemd) every call does nothing.
 
 #include <string>
 #include <string_view>
@@ -22,9 +24,10 @@ public:
 
     bool enabled() const { return fd_ >= 0; }
     double watchdog_interval() const { return watchdog_seconds_; }  // 0: no watchdog
+    double ping_interval() const { return watchdog_seconds_ / 4; }  // the least time between pings
 
     // Called after each presented frame at monotonic time `now`: READY=1 the first time, then
-    // WATCHDOG=1 whenever half the watchdog period has passed since the last ping.
+    // WATCHDOG=1 whenever ping_interval() has passed since the last ping.
     void frame_presented(double now);
     // STATUS=... (shown by systemctl status) and STOPPING=1.
     void status(std::string_view text);

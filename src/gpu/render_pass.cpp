@@ -1,5 +1,7 @@
 #include "gpu/render_pass.hpp"
 
+#include <cassert>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/buffer.hpp"
@@ -18,6 +20,12 @@ RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
     glViewport(0, 0, desc.target.size.x, desc.target.size.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
+    scissored_ = desc.rows.y > 0;
+    if (scissored_) {
+        assert(desc.load != LoadOp::DontCare && "the rows outside the band keep their contents");
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, desc.rows.x, desc.target.size.x, desc.rows.y);
+    }
     if (desc.load == LoadOp::Clear) {
         glClearColor(desc.clear.r, desc.clear.g, desc.clear.b, desc.clear.a);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -112,6 +120,7 @@ void RenderPass::end() {
         const GLenum attachment = is_default_framebuffer_ ? GL_COLOR : GL_COLOR_ATTACHMENT0;
         glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);
     }
+    if (scissored_) glDisable(GL_SCISSOR_TEST);
     labels_->pop_group();
 }
 

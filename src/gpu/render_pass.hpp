@@ -32,6 +32,9 @@ struct RenderPassDesc {
     LoadOp load = LoadOp::DontCare;
     glm::vec4 clear{0, 0, 0, 1};
     StoreOp store = StoreOp::Store;
+    // Only rows [first, first + count) of the target are drawn (glScissor; row 0 is GL's bottom row, t = 0),
+    // so a long pass can be split over frames. Count 0: every row. With a count, load must not be DontCare.
+    glm::ivec2 rows{0, 0};
 };
 
 class RenderPass {
@@ -66,6 +69,7 @@ private:
     const Pipeline* pipeline_ = nullptr;
     StoreOp store_ = StoreOp::Store;
     bool is_default_framebuffer_ = false;
+    bool scissored_ = false;
     bool ended_ = false;
     const DebugLabels* labels_ = nullptr;
 };

@@ -41,18 +41,24 @@ const char* format_name(TextureFormat f) {
 }
 
 void Texture::upload(std::span<const std::byte> data, int level, int face) {
+    upload_rows(data, level, face, 0, std::max(1, desc_.height >> level));
+}
+
+void Texture::upload_rows(std::span<const std::byte> data, int level, int face, int first_row, int rows) {
     const GlFormat f = gl_format(desc_.format);
     const int w = std::max(1, desc_.width >> level), h = std::max(1, desc_.height >> level);
-    assert(data.size() >= std::size_t(w) * h * f.channels * f.bytes_per_channel);
+    assert(first_row >= 0 && rows >= 0 && first_row + rows <= h);
+    assert(data.size() >= std::size_t(w) * rows * f.channels * f.bytes_per_channel);
+    (void)h;
     (void)data;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     if (desc_.kind == TextureKind::Cube) {
         glBindTexture(GL_TEXTURE_CUBE_MAP, id());
-        glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), level, 0, 0, w, h, f.format, f.type,
-                        data.data());
+        glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), level, 0, first_row, w, rows, f.format,
+                        f.type, data.data());
     } else {
         glBindTexture(GL_TEXTURE_2D, id());
-        glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, f.format, f.type, data.data());
+        glTexSubImage2D(GL_TEXTURE_2D, level, 0, first_row, w, rows, f.format, f.type, data.data());
     }
 }
 

@@ -51,6 +51,9 @@ public:
     // (RGBA16F also takes RGBA floats); RG32I ints. Rows bottom-up in GL terms = top-first image rows
     // for cube faces (GL's cube convention), first row at t=0 for 2D.
     void upload(std::span<const std::byte> data, int level = 0, int face = 0);
+    // Uploads `rows` rows of a level from `first_row` on (`data` holds just those rows, laid out as for
+    // upload()): a large level in several calls, so no single call holds up a frame for long.
+    void upload_rows(std::span<const std::byte> data, int level, int face, int first_row, int rows);
     // Level 0 of a 2D texture from rows `row_bytes` apart (a driver's bytesperline, often padded).
     void upload_rows(std::span<const std::byte> data, int row_bytes);
     void generate_mipmaps();

@@ -1,0 +1,71 @@
+// BackgroundJob: work runs off the calling thread, the newest submission wins, a superseded job is asked
+// to stop, and destruction stops a running job instead of waiting for it to finish on its own.
+#include "util/background_job.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+namespace puddle {
+namespace {
+
+using namespace std::chrono_literals;
+
+template <class T>
+std::optional<T> wait_for_result(BackgroundJob<T>& job) {
+    for (int i = 0; i < 10000; ++i) {
+        if (auto r = job.take()) return r;
+        std::this_thread::sleep_for(1ms);
+    }
+    return std::nullopt;
+}
+
+// Runs until asked to stop; says whether it was.
+int until_stopped(std::stop_token stop, std::atomic<bool>& started, std::atomic<bool>& saw_stop, int value) {
+    started = true;
+    while (!stop.stop_requested()) std::this_thread::sleep_for(1ms);
+    saw_stop = true;
+    return value;
+}
+
+TEST(BackgroundJob, RunsOffTheCallingThreadAndHandsTheResultOverOnce) {
+    BackgroundJob<std::thread::id> job;
+    EXPECT_FALSE(job.busy());
+    job.submit([](std::stop_token) { return std::this_thread::get_id(); });
+    EXPECT_TRUE(job.busy());
+    const auto id = wait_for_result(job);
+    ASSERT_TRUE(id);
+    EXPECT_NE(*id, std::this_thread::get_id());
+    EXPECT_FALSE(job.busy());
+    EXPECT_FALSE(job.take()) << "a result is handed over once";
+}
+
+TEST(BackgroundJob, TheNewestSubmissionWinsAndTheOlderOneIsAskedToStop) {
+    BackgroundJob<int> job;
+    std::atomic<bool> started{false}, saw_stop{false};
+    job.submit([&](std::stop_token stop) { return until_stopped(stop, started, saw_stop, 1); });
+    while (!started) std::this_thread::sleep_for(1ms);
+    job.submit([](std::stop_token) { return 2; });
+    const auto result = wait_for_result(job);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(*result, 2) << "the stale job's result is never handed over";
+    EXPECT_TRUE(saw_stop);
+    std::this_thread::sleep_for(20ms);
+    EXPECT_FALSE(job.take());
+    EXPECT_FALSE(job.busy());
+}
+
+TEST(BackgroundJob, DestructionStopsARunningJob) {
+    std::atomic<bool> started{false}, saw_stop{false};
+    {
+        BackgroundJob<int> job;
+        job.submit([&](std::stop_token stop) { return until_stopped(stop, started, saw_stop, 1); });
+        while (!started) std::this_thread::sleep_for(1ms);
+    }
+    EXPECT_TRUE(saw_stop);
+}
+
+}  // namespace
+}  // namespace puddle
