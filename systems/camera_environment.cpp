@@ -21,21 +21,31 @@ int mip_count(int size) {
     return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
 }
 
-// Makes `texture` anew only when its shape changes: once per stream, never per frame.
-void ensure_texture(gpu::Device& device, gpu::Texture& texture, const gpu::TextureDesc& desc) {
+// Makes `texture` anew only when its shape changes: once per stream, never per frame. A texture the GPU
+// cannot make disables the camera environment (one error line; the cubemap stays).
+Result<void> ensure_texture(gpu::Device& device, gpu::Texture& texture, const gpu::TextureDesc& desc,
+                            CameraEnvironment& env) {
     if (texture && texture.width() == desc.width && texture.height() == desc.height &&
         texture.desc().format == desc.format && texture.desc().mip_levels == desc.mip_levels)
-        return;
-    texture = device.create_texture(desc);
+        return {};
+    auto made = device.create_texture(desc);
+    if (!made) {
+        env.failed = true;
+        return made.error();
+    }
+    texture = std::move(made).value();
+    return {};
 }
 
-void ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int height) {
-    ensure_texture(device, env.colour,
-                   {.label = "camera colour",
-                    .format = gpu::TextureFormat::SRGB8_A8,
-                    .width = width,
-                    .height = height,
-                    .mip_levels = mip_count(std::max(width, height))});
+Result<void> ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int height) {
+    return ensure_texture(device, env.colour,
+                          {.label = "camera colour",
+                           .format = gpu::TextureFormat::SRGB8_A8,
+                           .width = width,
+                           .height = height,
+                           .mip_levels = mip_count(std::max(width, height)),
+                           .render_target = true},
+                          env);
 }
 
 const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::CameraImage& image,
@@ -106,12 +116,15 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
     env.nearest = device.create_sampler(
         {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
-    env.cube = device.create_texture({.label = "camera environment",
-                                      .kind = gpu::TextureKind::Cube,
-                                      .format = gpu::TextureFormat::SRGB8_A8,
-                                      .width = camera_cube_size,
-                                      .height = camera_cube_size,
-                                      .mip_levels = mip_count(camera_cube_size)});
+    auto made = device.create_texture({.label = "camera environment",
+                                       .kind = gpu::TextureKind::Cube,
+                                       .format = gpu::TextureFormat::SRGB8_A8,
+                                       .width = camera_cube_size,
+                                       .height = camera_cube_size,
+                                       .mip_levels = mip_count(camera_cube_size),
+                                       .render_target = true});
+    if (!made) return made.error();
+    env.cube = std::move(made).value();
     return {};
 }
 
@@ -128,7 +141,7 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
     env.pending.data = {};
     env.layout = image.layout;
     env.pending_import = nullptr;
-    ensure_colour(device, env, image.width, image.height);
+    if (auto r = ensure_colour(device, env, image.width, image.height); !r) return r;
     switch (image.layout) {
         case PixelLayout::Rgba:
             env.colour.upload_rows(image.data, image.stride);
@@ -148,18 +161,25 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
                     return make_error(ExitCode::Runtime,
                                       "camera: YUYV bytesperline {} is not a whole number of pixel pairs",
                                       image.stride);
-                ensure_texture(device, env.plane0,
-                               {.label = "camera plane 0",
-                                .format = yuyv ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::R8,
-                                .width = yuyv ? image.width / 2 : image.width,
-                                .height = image.height});
+                if (auto r =
+                        ensure_texture(device, env.plane0,
+                                       {.label = "camera plane 0",
+                                        .format = yuyv ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::R8,
+                                        .width = yuyv ? image.width / 2 : image.width,
+                                        .height = image.height},
+                                       env);
+                    !r)
+                    return r;
                 env.plane0.upload_rows(image.data, image.stride);
                 if (!yuyv) {
-                    ensure_texture(device, env.plane1,
-                                   {.label = "camera plane 1 (UV)",
-                                    .format = gpu::TextureFormat::RG8,
-                                    .width = image.width / 2,
-                                    .height = image.height / 2});
+                    if (auto r = ensure_texture(device, env.plane1,
+                                                {.label = "camera plane 1 (UV)",
+                                                 .format = gpu::TextureFormat::RG8,
+                                                 .width = image.width / 2,
+                                                 .height = image.height / 2},
+                                                env);
+                        !r)
+                        return r;
                     const auto luma =
                         static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(image.height);
                     env.plane1.upload_rows(image.data.subspan(luma), image.stride);

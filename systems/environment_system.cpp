@@ -34,16 +34,16 @@ CubeFormat cube_format(const gpu::Capabilities& caps, bool hdr) {
     return {gpu::TextureFormat::RGBA8, true};
 }
 
-gpu::Texture upload_faces(gpu::Device& device, assets::CubeImages& cube, CubeFormat f) {
+Result<gpu::Texture> upload_faces(gpu::Device& device, assets::CubeImages& cube, CubeFormat f,
+                                  int smallest_face_size) {
     while (cube.faces[0].width > device.caps().max_cube_map_size)
         for (assets::Image& face : cube.faces) face = assets::halve(face);
-    const int size = cube.faces[0].width;
-    gpu::Texture texture = device.create_texture({.label = "environment",
-                                                  .kind = gpu::TextureKind::Cube,
-                                                  .format = f.format,
-                                                  .width = size,
-                                                  .height = size,
-                                                  .mip_levels = mip_count(size)});
+    auto made = create_environment_cube(device, f.format, cube.faces[0].width,
+                                        std::min(smallest_face_size, cube.faces[0].width));
+    if (!made) return made.error();
+    gpu::Texture texture = std::move(made).value();
+    while (cube.faces[0].width > texture.width())  // it fitted only smaller
+        for (assets::Image& face : cube.faces) face = assets::halve(face);
     for (std::size_t face = 0; face < 6; ++face) {
         if (!f.rgbm) {
             texture.upload(std::as_bytes(std::span(cube.faces[face].data)), 0, static_cast<int>(face));
@@ -61,6 +61,17 @@ gpu::Texture upload_faces(gpu::Device& device, assets::CubeImages& cube, CubeFor
     return texture;
 }
 
+// A live reload that does not fit in GPU memory halves the face size down to a floor: at start-up there is
+// none (the size asked for fails with exit code 5), a new image stops at 256, and the image shown now stops
+// above its current size (a smaller copy of the same sky gains nothing: the one shown stays).
+int smallest_face_size(const Environment& shown, const params::Params& params, int asked) {
+    constexpr int fallback_floor = 256;
+    if (!shown.cube) return asked;
+    if (shown.requested_image == params.s(ParamId::environment_image))
+        return std::min(asked, shown.cube.width() * 2);
+    return std::min(asked, fallback_floor);
+}
+
 }  // namespace
 
 Result<void> load_environment(gpu::Device& device, const params::Params& params, Environment& env) {
@@ -73,7 +84,10 @@ Result<void> load_environment(gpu::Device& device, const params::Params& params,
     e.hdr = images->hdr();
     e.rgbm = f.rgbm;
     if (images->faces) {
-        e.cube = upload_faces(device, *images->faces, f);
+        auto cube = upload_faces(device, *images->faces, f,
+                                 smallest_face_size(env, params, images->faces->faces[0].width));
+        if (!cube) return cube.error();
+        e.cube = std::move(cube).value();
     } else {
         const int asked = params.i(ParamId::environment_face_size);
         const int max_size = device.caps().max_cube_map_size;
@@ -82,7 +96,8 @@ Result<void> load_environment(gpu::Device& device, const params::Params& params,
                          asked, max_size);
         const int size =
             asked > 0 ? std::min(asked, max_size) : auto_face_size(images->panorama.width, max_size);
-        auto cube = equirect_to_cube(device, images->panorama, size, f.format, f.rgbm);
+        auto cube = equirect_to_cube(device, images->panorama, size, f.format, f.rgbm,
+                                     smallest_face_size(env, params, size));
         if (!cube) return cube.error();
         e.cube = std::move(cube).value();
     }
@@ -111,11 +126,13 @@ Result<void> load_ground(gpu::Device& device, const params::Params& params, Grou
         g.source = path;
     }
     while (std::max(image.width, image.height) > device.caps().max_texture_size) image = assets::halve(image);
-    g.texture = device.create_texture({.label = "ground",
-                                       .format = gpu::TextureFormat::SRGB8_A8,
-                                       .width = image.width,
-                                       .height = image.height,
-                                       .mip_levels = mip_count(std::max(image.width, image.height))});
+    auto texture = device.create_texture({.label = "ground",
+                                          .format = gpu::TextureFormat::SRGB8_A8,
+                                          .width = image.width,
+                                          .height = image.height,
+                                          .mip_levels = mip_count(std::max(image.width, image.height))});
+    if (!texture) return texture.error();
+    g.texture = std::move(texture).value();
     g.texture.upload(std::as_bytes(std::span(image.data)));
     g.texture.generate_mipmaps();
     // Trilinear and anisotropic (where the GPU has it): tiled paving at grazing angles does not shimmer.

@@ -3,8 +3,10 @@
 // names, or made procedurally, with mipmaps. 8-bit images upload as sRGB textures (the sampler decodes
 // them to linear); HDR images stay linear: a half-float cube where the GPU can render into one (its
 // mipmaps need that), else RGBM RGBA8 that the puddle pass decodes. Start-up failures are errors
-// with exit code 3; a change of environment.image, environment.face_size or ground.image at run time
-// reloads, and a failed reload logs one line and keeps what is shown.
+// with exit code 3 (5 for a cube or texture that does not fit in GPU memory); a change of
+// environment.image, environment.face_size or ground.image at run time reloads, and a failed reload logs
+// one line and keeps what is shown. A live cube that does not fit tries smaller faces first
+// (create_environment_cube; the floor is smallest_face_size in environment_system.cpp).
 
 #include <string>
 

@@ -86,7 +86,7 @@ TEST_P(EquirectToCube, SixDirectionsOfSixColoursGiveFaceCentresOfThoseColours) {
         panorama_of(256, [](glm::vec3 d) { return kAxisColours[dominant_axis(d)]; });
 
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
-    auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback);
+    auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback, 32);
     ASSERT_TRUE(cube.ok()) << cube.error().message;
     for (int face = 0; face < 6; ++face) {
         const auto texels = device.read_texture(*cube, face);
@@ -105,7 +105,8 @@ TEST_P(EquirectToCube, EveryTexelHoldsThePanoramaInTheDirectionGlSamplesIt) {
     auto radiance = [](glm::vec3 d) { return 0.5f + 0.5f * d; };
     const int size = 16;
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
-    auto cube = systems::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback);
+    auto cube =
+        systems::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback, size);
     ASSERT_TRUE(cube.ok()) << cube.error().message;
     for (int face = 0; face < 6; ++face) {
         const auto texels = device.read_texture(*cube, face);
