@@ -62,10 +62,15 @@ Result<void> prepare_analytic_ripples(gpu::Device& device, const Surface& surfac
     });
     if (!r) return r;
     if (!ripples.sources) {
-        ripples.sources = device.create_texture({.label = "analytic sources",
-                                                 .format = gpu::TextureFormat::RGBA32F,
-                                                 .width = texels_per_source,
-                                                 .height = max_analytic_sources});
+        auto sources = device.create_texture({.label = "analytic sources",
+                                              .format = gpu::TextureFormat::RGBA32F,
+                                              .width = texels_per_source,
+                                              .height = max_analytic_sources});
+        if (!sources) {
+            ripples.pass.failed = true;  // like a shader that did not build: one line, then nothing drawn
+            return sources.error();
+        }
+        ripples.sources = std::move(sources).value();
         ripples.nearest = device.create_sampler(
             {.label = "analytic sources", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     }

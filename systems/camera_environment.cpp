@@ -23,21 +23,31 @@ int mip_count(int size) {
     return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
 }
 
-// Makes `texture` anew only when its shape changes: once per stream, never per frame.
-void ensure_texture(gpu::Device& device, gpu::Texture& texture, const gpu::TextureDesc& desc) {
+// Makes `texture` anew only when its shape changes: once per stream, never per frame. A texture the GPU
+// cannot make disables the camera environment (one error line; the cubemap stays).
+Result<void> ensure_texture(gpu::Device& device, gpu::Texture& texture, const gpu::TextureDesc& desc,
+                            CameraEnvironment& env) {
     if (texture && texture.width() == desc.width && texture.height() == desc.height &&
         texture.desc().format == desc.format && texture.desc().mip_levels == desc.mip_levels)
-        return;
-    texture = device.create_texture(desc);
+        return {};
+    auto made = device.create_texture(desc);
+    if (!made) {
+        env.failed = true;
+        return made.error();
+    }
+    texture = std::move(made).value();
+    return {};
 }
 
-void ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int height) {
-    ensure_texture(device, env.colour,
-                   {.label = "camera colour",
-                    .format = gpu::TextureFormat::SRGB8_A8,
-                    .width = width,
-                    .height = height,
-                    .mip_levels = mip_count(std::max(width, height))});
+Result<void> ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int height) {
+    return ensure_texture(device, env.colour,
+                          {.label = "camera colour",
+                           .format = gpu::TextureFormat::SRGB8_A8,
+                           .width = width,
+                           .height = height,
+                           .mip_levels = mip_count(std::max(width, height)),
+                           .render_target = true},
+                          env);
 }
 
 const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::CameraImage& image,
@@ -108,12 +118,15 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
     env.nearest = device.create_sampler(
         {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
-    env.cube = device.create_texture({.label = "camera environment",
-                                      .kind = gpu::TextureKind::Cube,
-                                      .format = gpu::TextureFormat::SRGB8_A8,
-                                      .width = camera_cube_size,
-                                      .height = camera_cube_size,
-                                      .mip_levels = mip_count(camera_cube_size)});
+    auto made = device.create_texture({.label = "camera environment",
+                                       .kind = gpu::TextureKind::Cube,
+                                       .format = gpu::TextureFormat::SRGB8_A8,
+                                       .width = camera_cube_size,
+                                       .height = camera_cube_size,
+                                       .mip_levels = mip_count(camera_cube_size),
+                                       .render_target = true});
+    if (!made) return made.error();
+    env.cube = std::move(made).value();
     return {};
 }
 
@@ -148,7 +161,7 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
     env.pending.data = {};
     env.layout = image.layout;
     env.pending_import = nullptr;
-    ensure_colour(device, env, image.width, image.height);
+    if (auto r = ensure_colour(device, env, image.width, image.height); !r) return r;
     if (image.layout == PixelLayout::Rgba) {
         env.colour.upload_rows(image.data, image.stride);
         env.colour.generate_mipmaps();
@@ -168,8 +181,11 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
         const std::array<gpu::Texture*, 2> planes{&env.plane0, &env.plane1};
         for (std::size_t i = 0; i < static_cast<std::size_t>(layout->count); ++i) {
             const camera::PlaneLayout& p = layout->planes[i];
-            ensure_texture(device, *planes[i],
-                           {.label = labels[i], .format = formats[i], .width = p.texels, .height = p.rows});
+            if (auto r = ensure_texture(
+                    device, *planes[i],
+                    {.label = labels[i], .format = formats[i], .width = p.texels, .height = p.rows}, env);
+                !r)
+                return r;
             planes[i]->upload_rows(image.data.subspan(p.offset), p.stride);
         }
     }

@@ -85,10 +85,11 @@ Result<PreparedEnvironment> prepare_environment(const EnvironmentRequest& reques
     return out;
 }
 
-EnvironmentBuild::EnvironmentBuild(PreparedEnvironment prepared) : prepared_(std::move(prepared)) {
+EnvironmentBuild::EnvironmentBuild(PreparedEnvironment prepared, int fallback_floor)
+    : prepared_(std::move(prepared)), smallest_face_size_(std::min(fallback_floor, prepared_.face_size)) {
     if (!prepared_.panorama_levels.empty())
         conversion_.emplace(std::move(prepared_.panorama_levels), prepared_.face_size, prepared_.format,
-                            prepared_.rgbm);
+                            prepared_.rgbm, smallest_face_size_);
 }
 
 Result<bool> EnvironmentBuild::step(gpu::Device& device) {
@@ -98,13 +99,21 @@ Result<bool> EnvironmentBuild::step(gpu::Device& device) {
         return done;
     }
     if (!cube_) {
-        cube_ = device.create_texture({.label = "environment",
-                                       .kind = gpu::TextureKind::Cube,
-                                       .format = prepared_.format,
-                                       .width = prepared_.face_size,
-                                       .height = prepared_.face_size,
-                                       .mip_levels = mip_count(prepared_.face_size)});
-        mipmaps_due_ = prepared_.cube_levels.size() == 1 && cube_.desc().mip_levels > 1;
+        auto made =
+            create_environment_cube(device, prepared_.format, prepared_.face_size, smallest_face_size_);
+        if (!made) return made.error();
+        cube_ = std::move(made).value();
+        // It fitted only smaller: RGBM has every level made already, so the larger ones go; otherwise
+        // level 0 is halved here (a fallback, once, rather than a frame-time cost of every reload).
+        auto& levels = prepared_.cube_levels;
+        while (levels.front()[0].width > cube_.width()) {
+            if (levels.size() > 1) {
+                levels.erase(levels.begin());
+                continue;
+            }
+            for (assets::Image& face : levels.front()) face = assets::halve(face);
+        }
+        mipmaps_due_ = levels.size() == 1 && cube_.desc().mip_levels > 1;
         return false;  // a step of its own: the driver may clear a large texture's memory
     }
     if (level_ < prepared_.cube_levels.size()) {

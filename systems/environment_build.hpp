@@ -57,8 +57,12 @@ public:
     // take 50 ms to upload as half floats and 120 to 220 ms to render from a panorama.
     static constexpr long texels_per_step = 1L << 20;
 
-    explicit EnvironmentBuild(PreparedEnvironment prepared);
-    // Does the next step; true once the cube is complete. An error ends the build.
+    // Where the cube asked for does not fit in GPU memory, smaller faces are tried down to
+    // `fallback_floor` (create_environment_cube); no_fallback: the size asked for or an error.
+    static constexpr int no_fallback = 1 << 30;
+    EnvironmentBuild(PreparedEnvironment prepared, int fallback_floor);
+    // Does the next step; true once the cube is complete. An error ends the build (ExitCode::GpuMemory
+    // for a cube that does not fit at any size allowed).
     Result<bool> step(gpu::Device& device);
     // The finished environment (after step() returned true) into `env`; logs the line that says what is
     // shown. Leaves env's requested_* values as they are.
@@ -66,6 +70,7 @@ public:
 
 private:
     PreparedEnvironment prepared_;
+    int smallest_face_size_;
     std::optional<EquirectToCube> conversion_;
     gpu::Texture cube_;
     std::size_t level_ = 0, face_ = 0;  // the next face image to upload

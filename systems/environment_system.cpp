@@ -19,15 +19,18 @@ int mip_count(int size) {
     return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
 }
 
-void upload_ground(gpu::Device& device, PreparedGround prepared, const std::string& path, Ground& ground) {
+Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const std::string& path,
+                           Ground& ground) {
     const assets::Image& image = prepared.image;
     Ground g;
     g.source = std::move(prepared.source);
-    g.texture = device.create_texture({.label = "ground",
-                                       .format = gpu::TextureFormat::SRGB8_A8,
-                                       .width = image.width,
-                                       .height = image.height,
-                                       .mip_levels = mip_count(std::max(image.width, image.height))});
+    auto texture = device.create_texture({.label = "ground",
+                                          .format = gpu::TextureFormat::SRGB8_A8,
+                                          .width = image.width,
+                                          .height = image.height,
+                                          .mip_levels = mip_count(std::max(image.width, image.height))});
+    if (!texture) return texture.error();
+    g.texture = std::move(texture).value();
     g.texture.upload(std::as_bytes(std::span(image.data)));
     g.texture.generate_mipmaps();
     // Trilinear and anisotropic (where the GPU has it): tiled paving at grazing angles does not shimmer.
@@ -35,11 +38,23 @@ void upload_ground(gpu::Device& device, PreparedGround prepared, const std::stri
         {.label = "ground", .mipmaps = true, .wrap = gpu::Wrap::Repeat, .anisotropy = 8.0f});
     g.requested_image = path;
     ground = std::move(g);
+    return {};
+}
+
+// A live reload that does not fit in GPU memory halves the face size down to a floor: at start-up there is
+// none (the size asked for fails with exit code 5), a new image stops at 256, and the image shown now stops
+// above its current size (a smaller copy of the same sky gains nothing: the one shown stays).
+int fallback_floor(const Environment& shown, const params::Params& params) {
+    constexpr int new_image_floor = 256;
+    if (!shown.cube) return EnvironmentBuild::no_fallback;
+    if (shown.requested_image == params.s(ParamId::environment_image)) return shown.cube.width() * 2;
+    return new_image_floor;
 }
 
 // A new sky asked for: decoded on the worker; the old one stays on screen meanwhile.
 void start_environment_reload(const gpu::Device& device, const params::Params& params, Environment& env,
                               EnvironmentReload& reload) {
+    reload.fallback_floor = fallback_floor(env, params);
     env.requested_image = params.s(ParamId::environment_image);
     env.requested_face_size = params.i(ParamId::environment_face_size);
     reload.environment_build.reset();  // a half-built older one is dropped
@@ -55,7 +70,7 @@ void continue_environment_reload(gpu::Device& device, Environment& env, Environm
             spdlog::error("{} (keeping {})", prepared->error().message, env.source);
             return;
         }
-        reload.environment_build.emplace(std::move(prepared->value()));
+        reload.environment_build.emplace(std::move(prepared->value()), reload.fallback_floor);
     }
     if (!reload.environment_build) return;
     auto done = reload.environment_build->step(device);
@@ -73,7 +88,7 @@ void continue_environment_reload(gpu::Device& device, Environment& env, Environm
 Result<void> load_environment(gpu::Device& device, const params::Params& params, Environment& env) {
     auto prepared = prepare_environment(EnvironmentRequest::from(params, device.caps()));
     if (!prepared) return prepared.error();
-    EnvironmentBuild build(std::move(prepared).value());
+    EnvironmentBuild build(std::move(prepared).value(), fallback_floor(env, params));
     for (;;) {
         auto done = build.step(device);
         if (!done) return done.error();
@@ -107,8 +122,7 @@ Result<void> load_ground(gpu::Device& device, const params::Params& params, Grou
     const std::string& path = params.s(ParamId::ground_image);
     auto prepared = prepare_ground(path, device.caps().max_texture_size);
     if (!prepared) return prepared.error();
-    upload_ground(device, std::move(prepared).value(), path, ground);
-    return {};
+    return upload_ground(device, std::move(prepared).value(), path, ground);
 }
 
 void environment_reload_system(ecs::World& world) {
@@ -132,8 +146,9 @@ void environment_reload_system(ecs::World& world) {
     if (auto prepared = reload.ground.take()) {
         if (!*prepared)
             spdlog::error("{} (keeping {})", prepared->error().message, ground.source);
-        else
-            upload_ground(device, std::move(prepared->value()), ground.requested_image, ground);
+        else if (auto r = upload_ground(device, std::move(prepared->value()), ground.requested_image, ground);
+                 !r)
+            spdlog::error("{} (keeping {})", r.error().message, ground.source);
     }
 }
 

@@ -3,10 +3,12 @@
 // names, or made procedurally, with mipmaps. 8-bit images upload as sRGB textures (the sampler decodes
 // them to linear); HDR images stay linear: a half-float cube where the GPU can render into one (its
 // mipmaps need that), else RGBM RGBA8 that the puddle pass decodes. Start-up failures are errors
-// with exit code 3. A change of environment.image, environment.face_size or ground.image at run time
-// reloads without stopping the frames: the files are read and decoded on a worker thread, the sky's GPU
-// half runs in bounded steps on the frame thread (environment_build.hpp), and what is shown changes in
-// one frame once the new one is complete. A failed reload logs one line and keeps what is shown.
+// with exit code 3 (5 for a cube or texture that does not fit in GPU memory). A change of
+// environment.image, environment.face_size or ground.image at run time reloads without stopping the
+// frames: the files are read and decoded on a worker thread, the sky's GPU half runs in bounded steps on
+// the frame thread (environment_build.hpp), and what is shown changes in one frame once the new one is
+// complete. A live cube that does not fit tries smaller faces first (create_environment_cube; the floor
+// is fallback_floor in environment_system.cpp). A failed reload logs one line and keeps what is shown.
 
 #include <optional>
 #include <string>
@@ -55,6 +57,7 @@ struct EnvironmentReload {
     BackgroundJob<Result<PreparedEnvironment>> environment;
     std::optional<EnvironmentBuild> environment_build;
     BackgroundJob<Result<PreparedGround>> ground;
+    int fallback_floor = EnvironmentBuild::no_fallback;  // the smallest faces the reload under way may use
 
     // True while a new sky or ground is being read, decoded or built.
     bool pending() const { return environment.busy() || environment_build.has_value() || ground.busy(); }

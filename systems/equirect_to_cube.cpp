@@ -18,6 +18,35 @@ int mip_count(int size) {
 
 }  // namespace
 
+Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFormat format, int face_size,
+                                             int smallest_face_size) {
+    auto make = [&](int size) {
+        return device.create_texture({.label = "environment",
+                                      .kind = gpu::TextureKind::Cube,
+                                      .format = format,
+                                      .width = size,
+                                      .height = size,
+                                      .mip_levels = mip_count(size),
+                                      .render_target = true});
+    };
+    auto cube = make(face_size);
+    if (cube || cube.error().code != ExitCode::GpuMemory) return cube;
+    const Error first = cube.error();
+    int size = face_size;
+    while (size / 2 >= std::max(smallest_face_size, 1)) {
+        size /= 2;
+        auto smaller = make(size);
+        if (smaller) {
+            spdlog::warn("{}; using {}x{} faces instead", first.message, size, size);
+            return smaller;
+        }
+        if (smaller.error().code != ExitCode::GpuMemory) return smaller;
+    }
+    if (size == face_size) return first;
+    return Error{fmt::format("{}; faces down to {}x{} did not fit either", first.message, size, size),
+                 first.code};
+}
+
 int auto_face_size(int panorama_width, int max_cube_size) {
     return std::clamp(panorama_width / 4, 1, std::min(1024, max_cube_size));
 }
@@ -40,8 +69,12 @@ std::vector<assets::Image> panorama_mip_chain(assets::Image panorama, int max_te
 }
 
 EquirectToCube::EquirectToCube(std::vector<assets::Image> levels, int face_size, gpu::TextureFormat format,
-                               bool rgbm)
-    : levels_(std::move(levels)), face_size_(face_size), format_(format), rgbm_(rgbm) {
+                               bool rgbm, int smallest_face_size)
+    : levels_(std::move(levels)),
+      face_size_(face_size),
+      smallest_face_size_(smallest_face_size),
+      format_(format),
+      rgbm_(rgbm) {
     panorama_width_ = levels_.front().width;
     panorama_height_ = levels_.front().height;
     panorama_mips_ = mip_count(panorama_width_);
@@ -52,12 +85,14 @@ Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
         case Phase::Upload: {
             if (!panorama_) {  // a step of its own: the driver may clear a large texture's memory
                 const bool hdr = levels_.front().format == assets::PixelFormat::RGBA32F;
-                panorama_ = device.create_texture(
+                auto made = device.create_texture(
                     {.label = "environment panorama",
                      .format = hdr ? gpu::TextureFormat::RGBA16F : gpu::TextureFormat::SRGB8_A8,
                      .width = panorama_width_,
                      .height = panorama_height_,
                      .mip_levels = panorama_mips_});
+                if (!made) return made.error();
+                panorama_ = std::move(made).value();
                 return false;
             }
             assets::Image& level = levels_[uploaded_];
@@ -89,15 +124,14 @@ Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
             phase_ = Phase::Cube;
             return false;
         }
-        case Phase::Cube:
-            cube_ = device.create_texture({.label = "environment",
-                                           .kind = gpu::TextureKind::Cube,
-                                           .format = format_,
-                                           .width = face_size_,
-                                           .height = face_size_,
-                                           .mip_levels = mip_count(face_size_)});
+        case Phase::Cube: {
+            auto made = create_environment_cube(device, format_, face_size_, smallest_face_size_);
+            if (!made) return made.error();
+            cube_ = std::move(made).value();
+            face_size_ = cube_.width();  // smaller where the asked size did not fit
             phase_ = Phase::Render;
             return false;
+        }
         case Phase::Render: {
             // Every level from the panorama itself, filtered as wide as its texels: RGBM texels cannot be
             // averaged by the driver's mipmap generation (a bright window next to a dark wall would lose
@@ -135,9 +169,9 @@ Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
 }
 
 Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& panorama, int face_size,
-                                      gpu::TextureFormat format, bool rgbm) {
+                                      gpu::TextureFormat format, bool rgbm, int smallest_face_size) {
     EquirectToCube conversion(panorama_mip_chain(panorama, device.caps().max_texture_size), face_size, format,
-                              rgbm);
+                              rgbm, smallest_face_size);
     for (;;) {
         auto done = conversion.step(device, static_cast<long>(face_size) * face_size);
         if (!done) return done.error();

@@ -18,6 +18,13 @@ namespace puddle::systems {
 // quarter of the horizon), at most 1024 and at most what the GPU takes.
 int auto_face_size(int panorama_width, int max_cube_size);
 
+// Makes an environment cube (kind Cube, a full mip chain, a render target) of `face_size`. When it does not
+// fit in GPU memory (exit code GpuMemory), tries half the size while that is at least
+// `smallest_face_size`, and logs one warning naming the size it used. The error, when none fits, is the
+// one for `face_size`, saying how far down it tried.
+Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFormat format, int face_size,
+                                             int smallest_face_size);
+
 // CPU only, any thread. The panorama as the conversion samples it, level 0 first: halved until it is at
 // most `max_texture_size` wide (8k and 16k panoramas exist; many GPUs stop at 4k); then, for a float
 // panorama, every mip level averaged from the one above (half floats filter everywhere in GLES 3.0, but
@@ -31,12 +38,16 @@ class EquirectToCube {
 public:
     // `levels`: panorama_mip_chain's output (RGBA8 sRGB or RGBA32F linear, width = 2 * height).
     // `format`: SRGB8_A8, RGBA16F or (with `rgbm`) RGBA8 holding RGBM texels.
-    EquirectToCube(std::vector<assets::Image> levels, int face_size, gpu::TextureFormat format, bool rgbm);
+    // The cube is made by create_environment_cube: where `face_size` does not fit, a smaller one down to
+    // `smallest_face_size` (take_cube().width() says which).
+    EquirectToCube(std::vector<assets::Image> levels, int face_size, gpu::TextureFormat format, bool rgbm,
+                   int smallest_face_size);
 
     // Does the next step: makes the panorama texture, uploads one band of rows of a panorama level, makes
     // the panorama's mipmaps, builds the pipeline, makes the cube, or renders one band of rows of one
     // face and level of the cube; a band is at most `texel_budget` texels.
-    // True once the cube is complete; an error (the shader does not build) ends the conversion.
+    // True once the cube is complete; an error (the shader does not build, a texture does not fit in
+    // GPU memory: ExitCode::GpuMemory) ends the conversion.
     Result<bool> step(gpu::Device& device, long texel_budget);
     gpu::Texture take_cube() { return std::move(cube_); }
 
@@ -45,6 +56,7 @@ private:
     std::vector<assets::Image> levels_;  // freed as they are uploaded
     int panorama_width_ = 0, panorama_height_ = 0, panorama_mips_ = 1;
     int face_size_;
+    int smallest_face_size_;
     gpu::TextureFormat format_;
     bool rgbm_;
     Phase phase_ = Phase::Upload;
@@ -59,6 +71,6 @@ private:
 
 // All of it at once (start-up and tests): the mip chain, then every step.
 Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& panorama, int face_size,
-                                      gpu::TextureFormat format, bool rgbm);
+                                      gpu::TextureFormat format, bool rgbm, int smallest_face_size);
 
 }  // namespace puddle::systems

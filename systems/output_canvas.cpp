@@ -41,18 +41,28 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
             r.unavailable = true;  // a shader that failed once fails every frame: no error 60 times a second
         }
     }
-    if (r.unavailable) {
+    if (!r.unavailable && size != r.canvas_size && size != r.failed_size) {
+        auto canvas = device.create_texture({.label = "canvas",
+                                             .format = gpu::TextureFormat::RGBA8,
+                                             .width = size.x,
+                                             .height = size.y,
+                                             .render_target = true});
+        if (canvas) {
+            r.canvas = std::move(canvas).value();
+            r.canvas_size = size;
+            spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}",
+                         display.size.x, display.size.y, degrees, size.x, size.y,
+                         r.scaled ? " and is scaled up" : "");
+        } else {
+            // The old canvas has the wrong size for this frame: the scene renders straight to the display.
+            spdlog::error("{} (showing the picture unturned, at full size)", canvas.error().message);
+            r.failed_size = size;
+        }
+    }
+    if (r.unavailable || size == r.failed_size) {
         r.quarter_turns = 0;
         r.scaled = false;
         return display;
-    }
-    if (size != r.canvas_size) {
-        r.canvas = device.create_texture(
-            {.label = "canvas", .format = gpu::TextureFormat::RGBA8, .width = size.x, .height = size.y});
-        r.canvas_size = size;
-        spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}",
-                     display.size.x, display.size.y, degrees, size.x, size.y,
-                     r.scaled ? " and is scaled up" : "");
     }
     return {&r.canvas, size};
 }

@@ -23,6 +23,8 @@ struct OutputCanvas {
     gpu::Sampler smooth;       // bilinear
     gpu::FrameTarget display;  // this frame's display target
     bool unavailable = false;  // its shaders failed to build: said once, then the picture stays as rendered
+    glm::ivec2 failed_size{0,
+                           0};  // a canvas the GPU could not make: said once, unturned until the size changes
 };
 
 // Called before each frame: remembers the display target and returns where the scene should render

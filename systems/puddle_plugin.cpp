@@ -26,25 +26,38 @@ using params::Params;
 
 namespace {
 
+// Both or neither: a surface that fails to build keeps the old field too (their sizes must match).
 Result<void> build_field_and_surface(ecs::World& world) {
     auto& device = world.resource<gpu::Device>();
-    auto& field = world.resource<WaveField>();
-    if (auto r = build_wave_field(device, world.resource<Params>(), field); !r) return r;
-    if (auto r = build_surface(device, field, world.resource<Surface>()); !r) return r;
+    WaveField new_field;
+    Surface new_surface;
+    if (auto r = build_wave_field(device, world.resource<Params>(), new_field); !r) return r;
+    if (auto r = build_surface(device, new_field, new_surface); !r) return r;
+    auto& field = world.resource<WaveField>() = std::move(new_field);
+    world.resource<Surface>() = std::move(new_surface);
     spdlog::info("wave: {}x{} field, {} ({} steps/s)", field.resolution, field.resolution,
                  field.fixed_point ? "fixed-point RG32I (no float render targets)" : "float RG32F",
                  world.resource<Params>().f(ParamId::wave_steps_per_second));
     return {};
 }
 
-// Input stage: a new resolution or field format needs new textures; the old field is dropped.
+// Input stage: a new resolution or field format needs new textures; the old field is dropped. One that
+// cannot be made (too big for GPU memory) logs one line and keeps the old field, until the values change.
 void wave_rebuild_system(ecs::World& world) {
     const Params& params = world.resource<Params>();
-    const WaveField& field = world.resource<WaveField>();
+    WaveField& field = world.resource<WaveField>();
     const bool want_fixed = !(params.b(ParamId::wave_float_field) &&
                               world.resource<gpu::Device>().caps().float_render_targets);
-    if (field.resolution == params.i(ParamId::wave_resolution) && field.fixed_point == want_fixed) return;
-    if (auto r = build_field_and_surface(world); !r) spdlog::error("{}", r.error().message);
+    const WaveField::Request wanted{params.i(ParamId::wave_resolution), want_fixed};
+    if (field.resolution == wanted.resolution && field.fixed_point == want_fixed) {
+        field.requested = {};  // back to what is shown: a later edit to the failed values tries again
+        return;
+    }
+    if (wanted == field.requested) return;
+    if (auto r = build_field_and_surface(world); !r) {
+        spdlog::error("{} (keeping the {}x{} field)", r.error().message, field.resolution, field.resolution);
+        field.requested = wanted;
+    }
 }
 
 // The puddle's surface comes from the wave field only with the pulse drops; analytic and grid drops

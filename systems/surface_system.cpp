@@ -16,10 +16,14 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
         {.label = "surface", .fragment = "surface.frag", .defines = defines, .textures = {"u_field"}});
     if (!pipeline) return pipeline.error();
     s.pipeline = std::move(pipeline).value();
-    s.texture = device.create_texture({.label = "surface",
-                                       .format = s.unorm ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F,
-                                       .width = field.resolution,
-                                       .height = field.resolution});
+    auto texture =
+        device.create_texture({.label = "surface",
+                               .format = s.unorm ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F,
+                               .width = field.resolution,
+                               .height = field.resolution,
+                               .render_target = true});
+    if (!texture) return texture.error();
+    s.texture = std::move(texture).value();
     s.field_sampler = device.create_sampler({.label = "field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     s.sampler = device.create_sampler({.label = "surface", .min = gpu::Filter::Linear, .mag = gpu::Filter::Linear});
     surface = std::move(s);

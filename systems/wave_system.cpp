@@ -29,10 +29,17 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     f.step = std::move(pipeline).value();
     // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
     f.nearest = device.create_sampler({.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
-    f.drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
+    auto drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
+    if (!drops) return drops.error();
+    f.drops = std::move(drops).value();
     for (int i = 0; i < 2; ++i) {
-        f.textures[static_cast<std::size_t>(i)] = device.create_texture(
-            {.label = fmt::format("wave field {}", i), .format = format, .width = n, .height = n});
+        auto texture = device.create_texture({.label = fmt::format("wave field {}", i),
+                                              .format = format,
+                                              .width = n,
+                                              .height = n,
+                                              .render_target = true});
+        if (!texture) return texture.error();
+        f.textures[static_cast<std::size_t>(i)] = std::move(texture).value();
         // A flat, still surface: clear both steps to zero.
         device.begin_pass({.label = "wave clear",
                            .target = {&f.textures[static_cast<std::size_t>(i)], {n, n}},

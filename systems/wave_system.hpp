@@ -24,13 +24,20 @@ struct WaveField {
     gpu::Pipeline step;
     gpu::Sampler nearest;
     gpu::Buffer drops;  // std140 vec4[max_drops]
+    // A field that could not be made: not retried every frame, only once the parameters change again.
+    struct Request {
+        int resolution = 0;
+        bool fixed_point = false;
+        bool operator==(const Request&) const = default;
+    } requested;
 
     const gpu::Texture& newest() const { return textures[static_cast<std::size_t>(current)]; }
     // Height and previous height of every texel (fixed point converted back to height units), rows by z.
     std::vector<float> read_heights(gpu::Device& device) const;
 };
 
-// Makes (or remakes, when wave.resolution or wave.float_field changed) a flat field.
+// Makes (or remakes, when wave.resolution or wave.float_field changed) a flat field. On an error (a
+// texture the GPU cannot make: exit code GpuMemory when it does not fit) `field` is left as it was.
 Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field);
 
 // Simulate stage, once per fixed step: inject the live drops and advance the field one step.

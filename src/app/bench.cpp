@@ -91,7 +91,9 @@ Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
         {.label = "bench floor", .vertex = "fullscreen.vert", .fragment = "floor.frag", .textures = {"u_source"}});
     if (!floor) return floor.error();
     b->floor = std::move(floor).value();
-    b->source = device.create_texture({.label = "bench source", .width = size.x, .height = size.y});
+    auto source = device.create_texture({.label = "bench source", .width = size.x, .height = size.y});
+    if (!source) return source.error();
+    b->source = std::move(source).value();
     b->source.upload(std::vector<std::byte>(static_cast<std::size_t>(size.x) * size.y * 4, std::byte{128}));
     // Linear, as a pass reading a video frame or an image would sample it.
     b->sampler = device.create_sampler({.label = "bench source"});
@@ -261,7 +263,13 @@ void bench_camera_external(benchmark::State& state) {
     }
     ecs::World& w = current->engine->world();
     gpu::Device& device = current->engine->device();
-    gpu::Texture source = device.create_texture({.label = "bench camera frame", .width = camera_size.x, .height = camera_size.y});
+    auto made = device.create_texture(
+        {.label = "bench camera frame", .width = camera_size.x, .height = camera_size.y});
+    if (!made) {
+        state.SkipWithError(made.error().message.c_str());
+        return;
+    }
+    gpu::Texture source = std::move(made).value();
     source.upload(std::vector<std::byte>(static_cast<std::size_t>(camera_size.x) * camera_size.y * 4, std::byte{90}));
     auto image = device.create_external_image({.label = "bench camera image", .source = &source});
     if (!image) {

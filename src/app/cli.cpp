@@ -33,11 +33,13 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         "  puddle                                  pick a display by itself (kms, window, else headless)\n"
         "  puddle --backend headless --frames 300 --screenshot rain.png\n"
         "  puddle --config /etc/puddle/puddle.toml --set rain.drop_count=40 --set water.turbidity=0.2\n"
-        "  puddle --config my.toml --print-config     every value and where it came from (preset, config, knob...)\n"
+        "  puddle --config my.toml --print-config     every value and where it came from (preset, config, "
+        "knob...)\n"
         "Live tuning: an edited config file applies within a moment (or send SIGHUP); a bad edit is logged\n"
         "with file:line and the last good config keeps running. `preset = \"downpour\"` in the config picks\n"
         "a look; [[knob]] tables wire GPIO encoders, buttons and switches (see config/puddle.toml).\n"
-        "Exit codes: 0 ok, 1 runtime failure, 2 bad config or flag, 3 missing or bad image, 4 no display.");
+        "Exit codes: 0 ok, 1 runtime failure, 2 bad config or flag, 3 missing or bad image, 4 no display,\n"
+        "5 out of GPU memory (a texture or buffer did not fit: try a smaller size).");
     cli.set_version_flag("--version", std::string("puddle ") + std::string(version()));
     std::string backend = "auto", size;
     cli.add_option("--config,-c", o.config_path, "TOML config file (default: /etc/puddle/puddle.toml if present)");

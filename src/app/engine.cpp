@@ -20,7 +20,7 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
 
     auto& device = engine->world_.insert_resource<gpu::Device>(device_options);
     spdlog::info("gpu: {}", device.caps().summary());
-    engine->display_->prepare(device);
+    if (auto r = engine->display_->prepare(device); !r) return r.error();
     engine->world_.insert_resource<params::Params>(params);
     engine->world_.insert_resource<systems::RenderTarget>();
     if (input_plugin) input_plugin(engine->world_, engine->schedule_);

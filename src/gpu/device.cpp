@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gpu/gl.hpp"
+#include "gpu/gl_errors.hpp"
 #include "gpu/shader_source.hpp"
 
 namespace puddle::gpu {
@@ -64,20 +65,41 @@ Device::Device(const DeviceOptions& options) : caps_(probe_capabilities(options.
     glBindVertexArray(vao);
 }
 
-Texture Device::create_texture(const TextureDesc& desc) {
+Result<Texture> Device::create_texture(const TextureDesc& desc) {
+    const bool cube = desc.kind == TextureKind::Cube;
+    const int limit = cube ? caps_.max_cube_map_size : caps_.max_texture_size;
+    if (desc.width < 1 || desc.height < 1 || desc.width > limit || desc.height > limit)
+        return make_error(ExitCode::Runtime,
+                          "gpu: texture '{}' ({}): {}x{} is outside 1 to {}, this GPU's largest {}",
+                          desc.label, describe_storage(desc), desc.width, desc.height, limit,
+                          cube ? "cube map face" : "texture");
     Texture t;
     t.desc_ = desc;
     GLuint id = 0;
     glGenTextures(1, &id);
     t.id_ = GlHandle<detail::delete_texture>(id);
-    const GLenum target = desc.kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    const GLenum target = cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    (void)take_gl_error();  // an earlier call's error is not this texture's
     glBindTexture(target, id);
     glTexStorage2D(target, std::max(1, desc.mip_levels), gl_format(desc.format).internal, desc.width, desc.height);
+    if (const GLenum e = take_gl_error(); e != GL_NO_ERROR)
+        return make_error(exit_code_for(e), "gpu: texture '{}' ({}): glTexStorage2D: {}", desc.label,
+                          describe_storage(desc), gl_error_name(e));
     // Integer and unfilterable float textures are incomplete with the default mipmap filter.
     glTexParameteri(target, GL_TEXTURE_MIN_FILTER, desc.mip_levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, std::max(0, desc.mip_levels - 1));
     labels_.label(GL_TEXTURE, id, desc.label);
+    if (desc.render_target) {
+        glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer());
+        const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        const GLenum e = take_gl_error();
+        if (status != GL_FRAMEBUFFER_COMPLETE || e != GL_NO_ERROR)
+            return make_error(exit_code_for(e), "gpu: render target '{}' ({}): framebuffer: {}{}", desc.label,
+                              describe_storage(desc), framebuffer_status_name(status),
+                              e != GL_NO_ERROR ? ", " + gl_error_name(e) : std::string());
+    }
     return t;
 }
 
@@ -99,20 +121,28 @@ Sampler Device::create_sampler(const SamplerDesc& desc) {
     return s;
 }
 
-Buffer Device::create_buffer(const BufferDesc& desc) {
+Result<Buffer> Device::create_buffer(const BufferDesc& desc) {
     Buffer b;
     GLuint id = 0;
     glGenBuffers(1, &id);
     b.id_ = GlHandle<detail::delete_buffer>(id);
     b.size_ = desc.size;
+    (void)take_gl_error();
     glBindBuffer(GL_UNIFORM_BUFFER, id);
     glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(desc.size), nullptr, GL_DYNAMIC_DRAW);
+    if (const GLenum e = take_gl_error(); e != GL_NO_ERROR)
+        return make_error(exit_code_for(e), "gpu: buffer '{}' ({} bytes): glBufferData: {}", desc.label,
+                          desc.size, gl_error_name(e));
     labels_.label(GL_BUFFER_KHR, id, desc.label);
     return b;
 }
 
 Result<Pipeline> Device::create_pipeline(const PipelineDesc& desc) {
     ShaderObject vs{glCreateShader(GL_VERTEX_SHADER)}, fs{glCreateShader(GL_FRAGMENT_SHADER)};
+    // Zero names: the driver could not make the objects (out of memory, or the context is lost).
+    if (!vs.id || !fs.id)
+        return make_error(ExitCode::Runtime, "gpu: pipeline '{}': glCreateShader: {}", desc.label,
+                          gl_error_name(take_gl_error()));
     if (auto r = compile(vs.id, desc.vertex, desc); !r) return r.error();
     if (auto r = compile(fs.id, desc.fragment, desc); !r) return r.error();
     Pipeline p;
@@ -120,6 +150,9 @@ Result<Pipeline> Device::create_pipeline(const PipelineDesc& desc) {
     p.blend_ = desc.blend;
     p.program_ = GlHandle<detail::delete_program>(glCreateProgram());
     const GLuint prog = p.program_.get();
+    if (!prog)
+        return make_error(ExitCode::Runtime, "gpu: pipeline '{}': glCreateProgram: {}", desc.label,
+                          gl_error_name(take_gl_error()));
     glAttachShader(prog, vs.id);
     glAttachShader(prog, fs.id);
     glLinkProgram(prog);

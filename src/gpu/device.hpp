@@ -36,9 +36,14 @@ public:
 
     const Capabilities& caps() const { return caps_; }
 
-    Texture create_texture(const TextureDesc& desc);
+    // Errors name the label, what was asked for and why: "gpu: texture 'environment' (cube 6 x 4096x4096
+    // SRGB8_ALPHA8, 13 levels, 512.0 MiB): glTexStorage2D: GL_OUT_OF_MEMORY". Exit code GpuMemory for
+    // GL_OUT_OF_MEMORY (a smaller size may fit), Runtime for a size beyond the GPU's limits, any other GL
+    // error or an incomplete render target framebuffer.
+    Result<Texture> create_texture(const TextureDesc& desc);
     Sampler create_sampler(const SamplerDesc& desc);
-    Buffer create_buffer(const BufferDesc& desc);
+    // Errors as create_texture's: "gpu: buffer 'live drops' (1024 bytes): glBufferData: GL_OUT_OF_MEMORY".
+    Result<Buffer> create_buffer(const BufferDesc& desc);
     // Compile and link errors name the shader file and line: "gpu: wave_step.frag:31: error: ...".
     Result<Pipeline> create_pipeline(const PipelineDesc& desc);
     RenderPass begin_pass(const RenderPassDesc& desc);

@@ -9,6 +9,7 @@
 
 #include "gpu/device.hpp"
 #include "gpu/gl.hpp"
+#include "gpu/gl_errors.hpp"
 
 namespace puddle::gpu {
 
@@ -151,8 +152,14 @@ Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& des
                                      .kind = TextureKind::External,
                                      .width = desc.source ? desc.source->width() : desc.width,
                                      .height = desc.source ? desc.source->height() : desc.height};
+    (void)take_gl_error();
     glBindTexture(GL_TEXTURE_EXTERNAL_OES, id);
     e.target_texture(GL_TEXTURE_EXTERNAL_OES, static_cast<GLeglImageOES>(image));
+    // A driver may make the image but refuse it as a texture (a format its sampler cannot read).
+    if (const GLenum error = take_gl_error(); error != GL_NO_ERROR)
+        return make_error(exit_code_for(error),
+                          "gpu: external image '{}' ({}x{}): glEGLImageTargetTexture2DOES: {}", desc.label,
+                          out.texture_.width(), out.texture_.height(), gl_error_name(error));
     glTexParameteri(GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     labels_.label(GL_TEXTURE, id, desc.label);

@@ -1,5 +1,8 @@
 #include "gpu/texture.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cassert>
 
 #include "gpu/gl.hpp"
@@ -38,6 +41,47 @@ const char* format_name(TextureFormat f) {
         case TextureFormat::RG8: return "RG8";
     }
     return "?";
+}
+
+int bytes_per_texel(TextureFormat f) {
+    switch (f) {
+        case TextureFormat::RGBA8:
+        case TextureFormat::SRGB8_A8:
+            return 4;
+        case TextureFormat::RG32F:
+        case TextureFormat::RG32I:
+        case TextureFormat::RGBA16F:
+            return 8;
+        case TextureFormat::RGBA32F:
+            return 16;
+        case TextureFormat::R8:
+            return 1;
+        case TextureFormat::RG8:
+            return 2;
+    }
+    return 4;
+}
+
+std::uint64_t storage_bytes(const TextureDesc& desc) {
+    std::uint64_t bytes = 0;
+    for (int level = 0; level < std::max(1, desc.mip_levels) && level < 32; ++level) {
+        const auto w = static_cast<std::uint64_t>(std::max(1, desc.width >> level));
+        const auto h = static_cast<std::uint64_t>(std::max(1, desc.height >> level));
+        bytes += w * h * static_cast<std::uint64_t>(bytes_per_texel(desc.format));
+    }
+    return desc.kind == TextureKind::Cube ? bytes * 6 : bytes;
+}
+
+std::string describe_storage(const TextureDesc& desc) {
+    const char* kind = desc.kind == TextureKind::Cube       ? "cube 6 x "
+                       : desc.kind == TextureKind::External ? "external "
+                                                            : "";
+    const std::uint64_t bytes = storage_bytes(desc);
+    const std::string amount = bytes < (1u << 20)
+                                   ? fmt::format("{} bytes", bytes)
+                                   : fmt::format("{:.1f} MiB", static_cast<double>(bytes) / (1 << 20));
+    return fmt::format("{}{}x{} {}, {} level{}, {}", kind, desc.width, desc.height, format_name(desc.format),
+                       desc.mip_levels, desc.mip_levels == 1 ? "" : "s", amount);
 }
 
 void Texture::upload(std::span<const std::byte> data, int level, int face) {

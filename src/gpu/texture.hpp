@@ -1,5 +1,7 @@
 #pragma once
 // Textures and samplers: move-only owners made by Device::create_texture / create_sampler.
+// create_texture checks what the driver made (storage, and the framebuffer of a render target) and
+// returns an error naming the texture, its size and the GL error instead of an empty texture.
 
 #include <array>
 #include <cstdint>
@@ -29,7 +31,16 @@ struct TextureDesc {
     TextureFormat format = TextureFormat::RGBA8;
     int width = 1, height = 1;
     int mip_levels = 1;
+    // Passes render into it (wgpu's RENDER_ATTACHMENT usage): create_texture checks that its level 0
+    // framebuffer is complete, so an unrenderable format fails at creation, not as a black frame.
+    bool render_target = false;
 };
+
+// Bytes of GPU storage the texture asks for: every level, every face (the driver may pad).
+std::uint64_t storage_bytes(const TextureDesc& desc);
+// "cube 6 x 4096x4096 SRGB8_ALPHA8, 13 levels, 512.0 MiB" (under 1 MiB in bytes): what an error message
+// says was asked for.
+std::string describe_storage(const TextureDesc& desc);
 
 namespace detail {
 void delete_texture(GLuint id);
@@ -98,5 +109,7 @@ struct GlFormat {
 };
 GlFormat gl_format(TextureFormat f);
 const char* format_name(TextureFormat f);
+// Bytes per texel as stored (RGBA16F is 8, although it uploads from floats).
+int bytes_per_texel(TextureFormat f);
 
 }  // namespace puddle::gpu

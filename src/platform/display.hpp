@@ -33,8 +33,9 @@ public:
     Display(const Display&) = delete;
     Display& operator=(const Display&) = delete;
 
-    // Called once the Device exists; a backend that renders offscreen makes its target here.
-    virtual void prepare(gpu::Device& /*device*/) {}
+    // Called once the Device exists; a backend that renders offscreen makes its target here (an error
+    // when the GPU cannot make it, e.g. a --size that does not fit in GPU memory).
+    virtual Result<void> prepare(gpu::Device& /*device*/) { return {}; }
     // Makes this display's EGL context current on the calling thread (a process may hold several, as tests
     // do).
     virtual void make_current() = 0;

@@ -18,9 +18,15 @@ class HeadlessDisplay final : public Display {
 public:
     HeadlessDisplay(EglContext context, glm::ivec2 size) : context_(std::move(context)), size_(size) {}
 
-    void prepare(gpu::Device& device) override {
-        target_ = device.create_texture(
-            {.label = "headless frame", .format = gpu::TextureFormat::RGBA8, .width = size_.x, .height = size_.y});
+    Result<void> prepare(gpu::Device& device) override {
+        auto target = device.create_texture({.label = "headless frame",
+                                             .format = gpu::TextureFormat::RGBA8,
+                                             .width = size_.x,
+                                             .height = size_.y,
+                                             .render_target = true});
+        if (!target) return target.error();
+        target_ = std::move(target).value();
+        return {};
     }
 
     void make_current() override { (void)context_.make_current_surfaceless(); }

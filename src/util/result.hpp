@@ -11,7 +11,8 @@
 namespace puddle {
 
 // Exit codes of the puddle binary (README: "Exit codes").
-enum class ExitCode : int { Ok = 0, Runtime = 1, Config = 2, Asset = 3, Display = 4 };
+// GpuMemory: a texture or buffer did not fit in GPU memory (GL_OUT_OF_MEMORY); smaller sizes may.
+enum class ExitCode : int { Ok = 0, Runtime = 1, Config = 2, Asset = 3, Display = 4, GpuMemory = 5 };
 
 struct Error {
     std::string message;

@@ -8,16 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <thread>
-
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include "assets/image_io.hpp"
+#include "support/running_puddle.hpp"
 #include "support/test_support.hpp"
-
-extern char** environ;
 
 namespace puddle::test {
 namespace {
@@ -28,63 +22,6 @@ std::string read_file(const std::filesystem::path& p) {
     s << in.rdbuf();
     return s.str();
 }
-
-// The binary running in the background until stopped, its log in a file.
-class Running {
-public:
-    Running(const std::vector<std::string>& args, std::filesystem::path log) : log_(std::move(log)) {
-        std::vector<std::string> all{PUDDLE_BINARY};
-        all.insert(all.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (auto& a : all) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_adddup2(&actions, 1, 2);
-        ok_ = posix_spawn(&pid_, PUDDLE_BINARY, &actions, nullptr, argv.data(), environ) == 0;
-        posix_spawn_file_actions_destroy(&actions);
-    }
-    ~Running() {
-        if (pid_ > 0) stop();
-    }
-    Running(const Running&) = delete;
-    Running& operator=(const Running&) = delete;
-    // Waits (up to 60 s: llvmpipe on a busy CI machine is slow) until the log contains `text`.
-    bool wait_for(const std::string& text, int after = 0) {
-        for (int i = 0; i < 600; ++i) {
-            if (count(text) > after) return true;
-            if (int status = 0; ::waitpid(pid_, &status, WNOHANG) == pid_) {  // it exited: no use waiting
-                pid_ = -1;
-                return count(text) > after;
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-        return false;
-    }
-    int count(const std::string& text) const {
-        const std::string log = read_file(log_);
-        int n = 0;
-        for (auto at = log.find(text); at != std::string::npos; at = log.find(text, at + 1)) ++n;
-        return n;
-    }
-    void signal(int sig) const { ::kill(pid_, sig); }
-    int stop() {
-        if (pid_ <= 0) return -1;
-        ::kill(pid_, SIGTERM);
-        int status = 0;
-        ::waitpid(pid_, &status, 0);
-        pid_ = -1;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    std::string log() const { return read_file(log_); }
-    bool ok() const { return ok_; }
-
-private:
-    std::filesystem::path log_;
-    pid_t pid_ = -1;
-    bool ok_ = false;
-};
 
 constexpr const char* knob_config = R"(
 [[knob]]

@@ -1,10 +1,13 @@
 // The gpu layer on a real (surfaceless) context: capabilities, a compile error that names file:line,
-// a pass that clears and reads back, float texture readback.
+// a pass that clears and reads back, float texture readback, and objects the driver cannot make
+// returned as errors naming what was asked for.
+#include "gpu/device.hpp"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <memory>
 
-#include "gpu/device.hpp"
 #include "platform/display.hpp"
 
 namespace puddle::gpu {
@@ -45,7 +48,9 @@ TEST_F(DeviceTest, CompileErrorNamesTheShaderFileAndLine) {
 }
 
 TEST_F(DeviceTest, ClearPassReadsBackTopRowFirst) {
-    Texture t = device_->create_texture({.label = "target", .format = TextureFormat::RGBA8, .width = 8, .height = 4});
+    Texture t =
+        device_->create_texture({.label = "target", .format = TextureFormat::RGBA8, .width = 8, .height = 4})
+            .value();
     device_->begin_pass({.label = "clear", .target = {&t, {8, 4}}, .load = LoadOp::Clear, .clear = {1, 0.5f, 0, 1}});
     std::vector<std::uint8_t> rgba(8 * 4 * 4);
     device_->read_pixels({&t, {8, 4}}, rgba);
@@ -56,19 +61,83 @@ TEST_F(DeviceTest, ClearPassReadsBackTopRowFirst) {
 }
 
 TEST_F(DeviceTest, FloatAndIntegerTexturesReadBackExactly) {
-    Texture f = device_->create_texture({.label = "f", .format = TextureFormat::RG32F, .width = 2, .height = 1});
+    Texture f =
+        device_->create_texture({.label = "f", .format = TextureFormat::RG32F, .width = 2, .height = 1})
+            .value();
     const float values[] = {1.5f, -2.25f, 1e-6f, 3.0f};
     f.upload(std::as_bytes(std::span(values)));
     auto back = device_->read_texture(f);
     EXPECT_FLOAT_EQ(back[0], 1.5f);
     EXPECT_FLOAT_EQ(back[1], -2.25f);
     EXPECT_FLOAT_EQ(back[4], 1e-6f);
-    Texture i = device_->create_texture({.label = "i", .format = TextureFormat::RG32I, .width = 1, .height = 1});
+    Texture i =
+        device_->create_texture({.label = "i", .format = TextureFormat::RG32I, .width = 1, .height = 1})
+            .value();
     const int ints[] = {-70000, 123456};
     i.upload(std::as_bytes(std::span(ints)));
     auto iback = device_->read_texture(i);
     EXPECT_EQ(iback[0], -70000.0f);
     EXPECT_EQ(iback[1], 123456.0f);
+}
+
+TEST_F(DeviceTest, ATextureBeyondTheGpusLargestSizeIsAnErrorNamingItsSize) {
+    const int too_wide = device_->caps().max_texture_size * 2;
+    auto t = device_->create_texture({.label = "too wide", .width = too_wide, .height = 4});
+    ASSERT_FALSE(t.ok());
+    EXPECT_EQ(t.error().code, ExitCode::Runtime);
+    EXPECT_NE(t.error().message.find(fmt::format("gpu: texture 'too wide' ({}x4 RGBA8, 1 level, ", too_wide)),
+              std::string::npos)
+        << t.error().message;
+    EXPECT_NE(t.error().message.find(fmt::format("): {}x4 is outside 1 to {}, this GPU's largest texture",
+                                                 too_wide, device_->caps().max_texture_size)),
+              std::string::npos)
+        << t.error().message;
+    auto cube = device_->create_texture({.label = "sky",
+                                         .kind = TextureKind::Cube,
+                                         .width = device_->caps().max_cube_map_size * 2,
+                                         .height = device_->caps().max_cube_map_size * 2});
+    ASSERT_FALSE(cube.ok());
+    EXPECT_NE(cube.error().message.find("this GPU's largest cube map face"), std::string::npos)
+        << cube.error().message;
+}
+
+// More mip levels than a 1x1 texture has: glTexStorage2D refuses (GL_INVALID_OPERATION), and the error
+// read after the call comes back instead of a texture without storage.
+TEST_F(DeviceTest, AStorageCallTheDriverRefusesIsAnErrorNamingTheGlError) {
+    auto t = device_->create_texture({.label = "tiny", .width = 1, .height = 1, .mip_levels = 5});
+    ASSERT_FALSE(t.ok());
+    EXPECT_EQ(t.error().code, ExitCode::Runtime);
+    EXPECT_EQ(t.error().message,
+              "gpu: texture 'tiny' (1x1 RGBA8, 5 levels, 20 bytes): glTexStorage2D: GL_INVALID_OPERATION");
+    // The error was taken: the next texture is not blamed for it.
+    EXPECT_TRUE(
+        device_->create_texture({.label = "next", .width = 2, .height = 2, .render_target = true}).ok());
+}
+
+// A terabyte uniform buffer: no GPU has it (Mesa refuses more than 4 GiB), so it is out of memory, exit
+// code 5.
+TEST_F(DeviceTest, ABufferThatDoesNotFitIsAnOutOfMemoryError) {
+    auto b = device_->create_buffer({.label = "huge", .size = std::size_t(1) << 40});
+    ASSERT_FALSE(b.ok());
+    EXPECT_EQ(b.error().code, ExitCode::GpuMemory);
+    EXPECT_EQ(b.error().message, "gpu: buffer 'huge' (1099511627776 bytes): glBufferData: GL_OUT_OF_MEMORY");
+    EXPECT_TRUE(device_->create_buffer({.label = "small", .size = 64}).ok());
+}
+
+TEST_F(DeviceTest, DescribesStorageInBytesOfEveryLevelAndFace) {
+    const TextureDesc cube{.kind = TextureKind::Cube,
+                           .format = TextureFormat::RGBA16F,
+                           .width = 4,
+                           .height = 4,
+                           .mip_levels = 3};
+    EXPECT_EQ(storage_bytes(cube), 6u * 8u * (16 + 4 + 1));
+    EXPECT_EQ(describe_storage(cube), "cube 6 x 4x4 RGBA16F, 3 levels, 1008 bytes");
+    const TextureDesc sky{.kind = TextureKind::Cube,
+                          .format = TextureFormat::SRGB8_A8,
+                          .width = 4096,
+                          .height = 4096,
+                          .mip_levels = 13};
+    EXPECT_EQ(describe_storage(sky), "cube 6 x 4096x4096 SRGB8_ALPHA8, 13 levels, 512.0 MiB");
 }
 
 }  // namespace

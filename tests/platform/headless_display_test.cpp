@@ -15,7 +15,7 @@ TEST(HeadlessDisplay, OffscreenTargetHasTheRequestedSize) {
     auto d = create_headless_display({.backend = BackendKind::Headless, .size = {100, 50}});
     ASSERT_TRUE(d.ok()) << d.error().message;
     gpu::Device device;
-    (*d)->prepare(device);
+    ASSERT_TRUE((*d)->prepare(device).ok());
     const gpu::FrameTarget t = (*d)->frame_target();
     ASSERT_NE(t.texture, nullptr);
     EXPECT_EQ(t.size, glm::ivec2(100, 50));

@@ -155,15 +155,18 @@ TEST_F(CameraEnvironmentTest, ExternalSamplerPathMatchesTheSource) {
     std::vector<std::uint8_t> rgba;
     for (const Rgb& c : colours)
         rgba.insert(rgba.end(), {std::uint8_t(c.r), std::uint8_t(c.g), std::uint8_t(c.b), 255});
-    gpu::Texture source = device.create_texture({.label = "test source", .width = width, .height = height});
+    gpu::Texture source =
+        device.create_texture({.label = "test source", .width = width, .height = height}).value();
     source.upload(std::as_bytes(std::span(rgba)));
     auto image = device.create_external_image({.label = "test image", .source = &source});
     ASSERT_TRUE(image) << image.error().message;
-    env.colour = device.create_texture({.label = "camera colour",
-                                        .format = gpu::TextureFormat::SRGB8_A8,
-                                        .width = width,
-                                        .height = height,
-                                        .mip_levels = 3});
+    env.colour = device
+                     .create_texture({.label = "camera colour",
+                                      .format = gpu::TextureFormat::SRGB8_A8,
+                                      .width = width,
+                                      .height = height,
+                                      .mip_levels = 3})
+                     .value();
     env.pending_import = &*image;
     env.convert_due = true;
     systems::camera_environment_system(device, engine->params(), sky(), env);

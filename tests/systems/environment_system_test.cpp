@@ -101,7 +101,7 @@ TEST_P(EquirectToCube, SixDirectionsOfSixColoursGiveFaceCentresOfThoseColours) {
         panorama_of(256, [](glm::vec3 d) { return kAxisColours[dominant_axis(d)]; });
 
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
-    auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback);
+    auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback, 32);
     ASSERT_TRUE(cube.ok()) << cube.error().message;
     for (int face = 0; face < 6; ++face) {
         const auto texels = device.read_texture(*cube, face);
@@ -120,7 +120,8 @@ TEST_P(EquirectToCube, EveryTexelHoldsThePanoramaInTheDirectionGlSamplesIt) {
     auto radiance = [](glm::vec3 d) { return 0.5f + 0.5f * d; };
     const int size = 16;
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
-    auto cube = systems::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback);
+    auto cube =
+        systems::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback, size);
     ASSERT_TRUE(cube.ok()) << cube.error().message;
     for (int face = 0; face < 6; ++face) {
         const auto texels = device.read_texture(*cube, face);
@@ -144,10 +145,10 @@ TEST_P(EquirectToCube, BandsOfRowsOverManyStepsGiveTheSameCubeAsWholeFaces) {
     const assets::Image panorama = panorama_of(256, [](glm::vec3 d) { return 0.5f + 0.5f * d; });
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
     const int size = 16;
-    auto whole = systems::equirect_to_cube(device, panorama, size, format, forced_fallback);
+    auto whole = systems::equirect_to_cube(device, panorama, size, format, forced_fallback, size);
     ASSERT_TRUE(whole.ok()) << whole.error().message;
     systems::EquirectToCube banded(systems::panorama_mip_chain(panorama, device.caps().max_texture_size),
-                                   size, format, forced_fallback);
+                                   size, format, forced_fallback, size);
     int steps = 0;
     for (bool done = false; !done; ++steps) {
         auto r = banded.step(device, 3 * size);  // three rows of a level-0 face, one panorama row
