@@ -1,5 +1,7 @@
 #include "gpu/device.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
 
@@ -13,6 +15,25 @@ void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 }  // namespace detail
 
 namespace {
+
+std::string gl_error_name(GLenum e) {
+    switch (e) {
+        case GL_INVALID_ENUM:
+            return "GL_INVALID_ENUM";
+        case GL_INVALID_VALUE:
+            return "GL_INVALID_VALUE";
+        case GL_INVALID_OPERATION:
+            return "GL_INVALID_OPERATION";
+        case GL_INVALID_FRAMEBUFFER_OPERATION:
+            return "GL_INVALID_FRAMEBUFFER_OPERATION";
+        case GL_OUT_OF_MEMORY:
+            return "GL_OUT_OF_MEMORY";
+        case GL_CONTEXT_LOST_KHR:
+            return "GL_CONTEXT_LOST";
+        default:
+            return fmt::format("GL error 0x{:04x}", e);
+    }
+}
 
 GLint gl_wrap(Wrap w) {
     switch (w) {
@@ -189,5 +210,17 @@ std::vector<float> Device::read_texture(const Texture& texture, int face) {
 }
 
 void Device::finish() { glFinish(); }
+
+std::string Device::take_errors() {
+    std::string names;
+    // A context can hold one flag per error kind; a lost context repeats GL_CONTEXT_LOST, so stop at 16.
+    for (int i = 0; i < 16; ++i) {
+        const GLenum e = glGetError();
+        if (e == GL_NO_ERROR) break;
+        if (!names.empty()) names += ", ";
+        names += gl_error_name(e);
+    }
+    return names;
+}
 
 }  // namespace puddle::gpu

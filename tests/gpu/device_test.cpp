@@ -71,5 +71,14 @@ TEST_F(DeviceTest, FloatAndIntegerTexturesReadBackExactly) {
     EXPECT_EQ(iback[1], 123456.0f);
 }
 
+TEST_F(DeviceTest, TakeErrorsNamesARaisedGlErrorOnceThenIsEmpty) {
+    EXPECT_EQ(device_->take_errors(), "") << "a fresh device raised an error";
+    // glTexStorage2D refuses a zero width with GL_INVALID_VALUE: a real error, raised through the gpu layer.
+    Texture bad = device_->create_texture(
+        {.label = "zero width", .format = TextureFormat::RGBA8, .width = 0, .height = 4});
+    EXPECT_EQ(device_->take_errors(), "GL_INVALID_VALUE");
+    EXPECT_EQ(device_->take_errors(), "") << "taking the errors clears them";
+}
+
 }  // namespace
 }  // namespace puddle::gpu
