@@ -43,8 +43,8 @@ std::string config_path(const CliOptions& o) {
     return std::filesystem::exists(system_config) ? system_config : "";
 }
 
-// The layers of live tuning: defaults < preset < config < knob state < --seed/--set. Start-up errors in
-// the config or a flag are exit code 2; a bad state file is moved aside and only warned about.
+}  // namespace
+
 Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
     std::vector<params::ConfigEntry> command_line;
     if (o.seed) command_line.push_back({params::ParamId::rain_seed, *o.seed, 0});
@@ -89,6 +89,8 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
     }
     return tuning;
 }
+
+namespace {
 
 // One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
 void log_stats(const FrameStats::Summary& s) {
