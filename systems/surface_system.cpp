@@ -9,13 +9,18 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
     s.resolution = field.resolution;
     s.unorm = !device.caps().half_float_render_targets;
     s.field_fixed_point = field.fixed_point;
-    std::vector<std::string> defines;
-    if (s.unorm) defines.emplace_back("SURFACE_UNORM");
-    if (field.fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
-    auto pipeline = device.create_pipeline(
-        {.label = "surface", .fragment = "surface.frag", .defines = defines, .textures = {"u_field"}});
-    if (!pipeline) return pipeline.error();
-    s.pipeline = std::move(pipeline).value();
+    if (surface.pipeline.id() != 0 && surface.unorm == s.unorm &&
+        surface.field_fixed_point == s.field_fixed_point) {
+        s.pipeline = std::move(surface.pipeline);  // a new resolution: same shader, new texture
+    } else {
+        std::vector<std::string> defines;
+        if (s.unorm) defines.emplace_back("SURFACE_UNORM");
+        if (field.fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
+        auto pipeline = device.create_pipeline(
+            {.label = "surface", .fragment = "surface.frag", .defines = defines, .textures = {"u_field"}});
+        if (!pipeline) return pipeline.error();
+        s.pipeline = std::move(pipeline).value();
+    }
     s.texture = device.create_texture({.label = "surface",
                                        .format = s.unorm ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F,
                                        .width = field.resolution,

@@ -14,22 +14,30 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     const bool fixed_point = !(params.b(ParamId::wave_float_field) && device.caps().float_render_targets);
     const gpu::TextureFormat format = fixed_point ? gpu::TextureFormat::RG32I : gpu::TextureFormat::RG32F;
 
-    std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
-    if (fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
-    auto pipeline = device.create_pipeline({.label = "wave step",
-                                            .fragment = "wave_step.frag",
-                                            .defines = defines,
-                                            .textures = {"u_field"},
-                                            .uniform_blocks = {"Drops"}});
-    if (!pipeline) return pipeline.error();
-
     WaveField f;
     f.resolution = n;
     f.fixed_point = fixed_point;
-    f.step = std::move(pipeline).value();
-    // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
-    f.nearest = device.create_sampler({.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
-    f.drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
+    if (field.step.id() != 0 && field.fixed_point == fixed_point) {
+        // A new resolution needs new textures only. Compiling the step again on every rebuild grew the
+        // process by about 65 KiB each time on llvmpipe (puddle-soak, README "Soak").
+        f.step = std::move(field.step);
+        f.nearest = std::move(field.nearest);
+        f.drops = std::move(field.drops);
+    } else {
+        std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
+        if (fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
+        auto pipeline = device.create_pipeline({.label = "wave step",
+                                                .fragment = "wave_step.frag",
+                                                .defines = defines,
+                                                .textures = {"u_field"},
+                                                .uniform_blocks = {"Drops"}});
+        if (!pipeline) return pipeline.error();
+        f.step = std::move(pipeline).value();
+        // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
+        f.nearest = device.create_sampler(
+            {.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+        f.drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
+    }
     for (int i = 0; i < 2; ++i) {
         f.textures[static_cast<std::size_t>(i)] = device.create_texture(
             {.label = fmt::format("wave field {}", i), .format = format, .width = n, .height = n});
