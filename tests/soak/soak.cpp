@@ -93,6 +93,7 @@ struct Counters {
     ProcessSample first, last;
     long max_growth_kib = 0;
     int min_fds = 1 << 30, max_fds = 0;
+    std::string memory_violation;  // the first check over the memory or fd limit
 };
 
 // The mock camera: two small images, so each poll that is due uploads a different one.
@@ -216,6 +217,7 @@ public:
             if ((n + 1) % p.check_every == 0 || n + 1 == p.frames)
                 if (auto v = check(n + 1)) return v;
         }
+        if (!c_.memory_violation.empty()) return c_.memory_violation;
         return std::nullopt;
     }
 
@@ -276,14 +278,16 @@ private:
         }
         const long growth = s.rss_kib - c_.warm->rss_kib;
         c_.max_growth_kib = std::max(c_.max_growth_kib, growth);
-        if (growth >= rss_growth_limit_kib)
-            return fmt::format(
+        // Memory and fds do not stop the run: a long run's figures show whether growth levels off.
+        if (growth >= rss_growth_limit_kib && c_.memory_violation.empty())
+            c_.memory_violation = fmt::format(
                 "frame {}: resident memory grew {} KiB since warm-up at frame {} ({:.1f} -> {:.1f} MB; "
                 "limit {} KiB)",
                 frame, growth, c_.warm_frame, mb(c_.warm->rss_kib), mb(s.rss_kib), rss_growth_limit_kib);
-        if (s.open_fds != c_.warm->open_fds)
-            return fmt::format("frame {}: {} open file descriptors, {} after warm-up at frame {}", frame,
-                               s.open_fds, c_.warm->open_fds, c_.warm_frame);
+        if (s.open_fds != c_.warm->open_fds && c_.memory_violation.empty())
+            c_.memory_violation =
+                fmt::format("frame {}: {} open file descriptors, {} after warm-up at frame {}", frame,
+                            s.open_fds, c_.warm->open_fds, c_.warm_frame);
         std::printf("soak: frame %ld: resident %.1f MB (%+ld KiB since warm-up), %d fds\n", frame,
                     mb(s.rss_kib), growth, s.open_fds);
         std::fflush(stdout);
