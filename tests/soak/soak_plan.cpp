@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <numeric>
 
 namespace puddle::soak {
 
@@ -20,7 +21,8 @@ constexpr std::array<Look, looks_per_cycle> looks{{
 }  // namespace
 
 long SoakPlan::warmup_frames() const {
-    const long two_cycles = 2 * looks_per_cycle * 2 * reload_every;
+    // Looks repeat every 12 reloads and field sizes every 8: every pairing of the two recurs every 24.
+    const long two_cycles = 2 * std::lcm(looks_per_cycle * 2, 8L) * reload_every;
     return (two_cycles + check_every - 1) / check_every * check_every;
 }
 
