@@ -1,9 +1,9 @@
 #include "systems/wave_system.hpp"
 
+#include <fmt/format.h>
+
 #include <cstddef>
 #include <span>
-
-#include <fmt/format.h>
 
 namespace puddle::systems {
 
@@ -13,25 +13,31 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     const int n = params.i(ParamId::wave_resolution);
     const bool fixed_point = !(params.b(ParamId::wave_float_field) && device.caps().float_render_targets);
     const gpu::TextureFormat format = fixed_point ? gpu::TextureFormat::RG32I : gpu::TextureFormat::RG32F;
-
-    std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
-    if (fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
-    auto pipeline = device.create_pipeline({.label = "wave step",
-                                            .fragment = "wave_step.frag",
-                                            .defines = defines,
-                                            .textures = {"u_field"},
-                                            .uniform_blocks = {"Drops"}});
-    if (!pipeline) return pipeline.error();
+    // A new resolution needs new textures only: compiling the step again on every rebuild grew the process
+    // by about 65 KiB each time on llvmpipe (puddle-soak, README "Soak"). The old field is taken from only
+    // once everything that can fail has worked, so a failed rebuild leaves it whole.
+    const bool reuse = field.step.id() != 0 && field.fixed_point == fixed_point;
 
     WaveField f;
     f.resolution = n;
     f.fixed_point = fixed_point;
-    f.step = std::move(pipeline).value();
-    // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
-    f.nearest = device.create_sampler({.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
-    auto drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
-    if (!drops) return drops.error();
-    f.drops = std::move(drops).value();
+    if (!reuse) {
+        std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
+        if (fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
+        auto pipeline = device.create_pipeline({.label = "wave step",
+                                                .fragment = "wave_step.frag",
+                                                .defines = defines,
+                                                .textures = {"u_field"},
+                                                .uniform_blocks = {"Drops"}});
+        if (!pipeline) return pipeline.error();
+        f.step = std::move(pipeline).value();
+        // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
+        f.nearest = device.create_sampler(
+            {.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+        auto drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
+        if (!drops) return drops.error();
+        f.drops = std::move(drops).value();
+    }
     for (int i = 0; i < 2; ++i) {
         auto texture = device.create_texture({.label = fmt::format("wave field {}", i),
                                               .format = format,
@@ -46,11 +52,17 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
                            .load = gpu::LoadOp::Clear,
                            .clear = {0, 0, 0, 0}});
     }
+    if (reuse) {
+        f.step = std::move(field.step);
+        f.nearest = std::move(field.nearest);
+        f.drops = std::move(field.drops);
+    }
     field = std::move(f);
     return {};
 }
 
-void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops, WaveField& field) {
+void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops,
+                 WaveField& field) {
     const auto next = static_cast<std::size_t>(1 - field.current);
     field.drops.write(std::as_bytes(std::span(drops.drops.data(), static_cast<std::size_t>(drops.count))));
     auto pass = device.begin_pass({.label = "wave step",

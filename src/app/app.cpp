@@ -62,8 +62,9 @@ void restore_saved_state(systems::LiveTuning& tuning, bool read_only) {
     tuning.state_dirty = true;  // saved on the first frame
 }
 
-// The layers of live tuning: defaults < preset < config < knob state < --seed/--set. Start-up errors in
-// the config or a flag are exit code 2; bad saved state is only warned about (restore_saved_state).
+}  // namespace
+
+// Bad saved state is only warned about (restore_saved_state).
 Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     std::vector<params::ConfigEntry> command_line;
     if (o.seed) command_line.push_back({params::ParamId::rain_seed, *o.seed, 0});
@@ -103,6 +104,8 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     }
     return tuning;
 }
+
+namespace {
 
 // One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
 void log_stats(const FrameStats::Summary& s) {

@@ -1,5 +1,19 @@
 #pragma once
 // The puddle program: options -> parameters -> engine -> frame loop. Returns the process exit code.
+
+#include "app/cli.hpp"
+#include "systems/live_tuning.hpp"
+#include "util/result.hpp"
+
 namespace puddle::app {
+
 int run(int argc, const char* const* argv);
-}
+
+// The layers of live tuning the options ask for: defaults < preset < config < knob state < --seed/--set,
+// with the config file's path to watch and the knobs' GPIO backend. Errors in the config or a flag are
+// exit code 2; bad keys in the state file are dropped and warned about, one line each, and the original
+// is set aside (README "Saved state"). `read_only` (--print-config) reads and warns but changes nothing on
+// disk. The soak test builds its engine with this too, so it runs what the binary runs.
+Result<systems::LiveTuning> load_tuning(const CliOptions& options, bool read_only = false);
+
+}  // namespace puddle::app

@@ -1,10 +1,14 @@
 // CameraSource "mock:PATH": one image, or a folder of images played in a loop at the requested frame
 // rate, paced by the frame loop's time (so headless runs are repeatable). Stands in for a camera in
-// the end-to-end test and on machines without one.
+// the end-to-end test and on machines without one. Renaming or deleting the image or folder unplugs
+// it: the next frame due is an error, as a V4L2 device that vanished from /dev is (the soak test's seam).
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include "assets/image_io.hpp"
@@ -26,6 +30,9 @@ public:
     Result<std::optional<CameraImage>> poll(double now) override {
         const auto tick = static_cast<std::int64_t>(std::floor(now * fps_));
         if (delivered_ && tick == last_tick_) return std::optional<CameraImage>{};
+        if (access(path_.c_str(), F_OK) != 0)  // once per frame due; allocates nothing while it is there
+            return make_error(ExitCode::Runtime, "camera: mock:{}: the device went away ({})", path_,
+                              std::strerror(errno));
         delivered_ = true;
         last_tick_ = tick;
         const assets::Image& f =

@@ -1,5 +1,7 @@
 #include "gpu/device.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
 
@@ -222,5 +224,17 @@ std::vector<float> Device::read_texture(const Texture& texture, int face) {
 }
 
 void Device::finish() { glFinish(); }
+
+std::string Device::take_errors() {
+    std::string names;
+    // A context can hold one flag per error kind; a lost context repeats GL_CONTEXT_LOST, so stop at 16.
+    for (int i = 0; i < 16; ++i) {
+        const GLenum e = glGetError();
+        if (e == GL_NO_ERROR) break;
+        if (!names.empty()) names += ", ";
+        names += gl_error_name(e);
+    }
+    return names;
+}
 
 }  // namespace puddle::gpu

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "gpu/buffer.hpp"
@@ -58,6 +59,10 @@ public:
     std::vector<float> read_texture(const Texture& texture, int face = 0);
     // Waits until the GPU is done: benchmarks time whole passes with it.
     void finish();
+    // Every GL error flag raised since the last call (glGetError until GL_NO_ERROR), as names joined by
+    // ", " ("GL_INVALID_VALUE, GL_OUT_OF_MEMORY"); empty when there was none. Clears the flags. For
+    // checks (the soak test), not for every frame.
+    std::string take_errors();
 
 private:
     Capabilities caps_;

@@ -49,6 +49,36 @@ TEST(MockSource, AFolderOfTooManyImagesIsRefusedBeforeDecodingAny) {
                                        ": the folder holds more than 256 images; the limit is 256");
 }
 
+TEST(MockSource, RenamedFolderIsAnUnplugAndComesBackWhenReopened) {
+    TempDir dir;
+    const auto folder = dir / "camera", away = dir / "camera-unplugged";
+    std::filesystem::create_directory(folder);
+    write_solid((folder / "a.png").string(), 30);
+    FakeV4l2Device unused;
+    const camera::CaptureRequest request{.device = "mock:" + folder.string(), .fps = 10.0};
+    auto src = camera::open_camera_source(unused, request);
+    ASSERT_TRUE(src) << src.error().message;
+    auto first = (*src)->poll(0.0);
+    ASSERT_TRUE(first && first->has_value());
+
+    std::filesystem::rename(folder, away);
+    auto same_tick = (*src)->poll(0.05);
+    ASSERT_TRUE(same_tick) << "nothing is due within the tick, so nothing is checked";
+    EXPECT_FALSE(same_tick->has_value());
+    auto gone = (*src)->poll(0.1);
+    ASSERT_FALSE(gone) << "the next frame due finds the folder gone";
+    EXPECT_NE(gone.error().message.find("went away"), std::string::npos) << gone.error().message;
+    EXPECT_NE(gone.error().message.find(folder.string()), std::string::npos) << gone.error().message;
+    EXPECT_FALSE(camera::open_camera_source(unused, request)) << "unplugged: opening fails";
+
+    std::filesystem::rename(away, folder);
+    auto back = camera::open_camera_source(unused, request);
+    ASSERT_TRUE(back) << back.error().message;
+    auto frame = (*back)->poll(0.2);
+    ASSERT_TRUE(frame && frame->has_value());
+    EXPECT_EQ(std::to_integer<int>((**frame).data[0]), 30);
+}
+
 TEST(MockSource, MissingPathIsAnAssetErrorNamingIt) {
     FakeV4l2Device unused;
     auto src = camera::open_camera_source(unused, {.device = "mock:/nonexistent/room.png"});

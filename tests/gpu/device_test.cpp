@@ -16,7 +16,8 @@ namespace {
 class DeviceTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        auto d = platform::create_headless_display({.backend = platform::BackendKind::Headless, .size = {64, 32}});
+        auto d =
+            platform::create_headless_display({.backend = platform::BackendKind::Headless, .size = {64, 32}});
         ASSERT_TRUE(d.ok()) << d.error().message;
         display_ = std::move(d).value();
         device_ = std::make_unique<Device>();
@@ -51,7 +52,8 @@ TEST_F(DeviceTest, ClearPassReadsBackTopRowFirst) {
     Texture t =
         device_->create_texture({.label = "target", .format = TextureFormat::RGBA8, .width = 8, .height = 4})
             .value();
-    device_->begin_pass({.label = "clear", .target = {&t, {8, 4}}, .load = LoadOp::Clear, .clear = {1, 0.5f, 0, 1}});
+    device_->begin_pass(
+        {.label = "clear", .target = {&t, {8, 4}}, .load = LoadOp::Clear, .clear = {1, 0.5f, 0, 1}});
     std::vector<std::uint8_t> rgba(8 * 4 * 4);
     device_->read_pixels({&t, {8, 4}}, rgba);
     EXPECT_EQ(rgba[0], 255);
@@ -138,6 +140,20 @@ TEST_F(DeviceTest, DescribesStorageInBytesOfEveryLevelAndFace) {
                           .height = 4096,
                           .mip_levels = 13};
     EXPECT_EQ(describe_storage(sky), "cube 6 x 4096x4096 SRGB8_ALPHA8, 13 levels, 512.0 MiB");
+}
+
+TEST_F(DeviceTest, TakeErrorsNamesARaisedGlErrorOnceThenIsEmpty) {
+    EXPECT_EQ(device_->take_errors(), "") << "a fresh device raised an error";
+    // An upload to a mip level an immutable texture has no storage for: glTexSubImage2D raises
+    // GL_INVALID_OPERATION (GLES 3.0 section 3.8.5), a real error through the gpu layer (creation checks
+    // its own errors, so it cannot serve here).
+    auto t = device_->create_texture(
+        {.label = "one level", .format = TextureFormat::RGBA8, .width = 4, .height = 4});
+    ASSERT_TRUE(t.ok()) << t.error().message;
+    const std::vector<std::byte> texels(4 * 4 * 4);
+    t->upload(texels, 2);
+    EXPECT_EQ(device_->take_errors(), "GL_INVALID_OPERATION");
+    EXPECT_EQ(device_->take_errors(), "") << "taking the errors clears them";
 }
 
 }  // namespace
