@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -71,5 +72,8 @@ Result<std::unique_ptr<GpioBackend>> make_gpio_backend(std::string_view spec);
 Error gpio_request_error(const LineRequest& request, int err);
 // True when every character is a digit (a line offset or chip number rather than a name).
 bool is_number(std::string_view text);
+// A line given as an offset ("17"): its value; nothing for a name ("GPIO17") or for digits past any
+// chip's lines (more than 65535), which must fail as "no such line" rather than overflow an int.
+std::optional<int> line_offset(std::string_view text);
 
 }  // namespace puddle::io
