@@ -3,11 +3,13 @@
 #include <drm_fourcc.h>
 #include <spdlog/spdlog.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "camera/frame_layout.hpp"
 #include "camera/yuv_matrix.hpp"
 
 namespace puddle::systems {
@@ -39,7 +41,7 @@ void ensure_colour(gpu::Device& device, CameraEnvironment& env, int width, int h
 }
 
 const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::CameraImage& image,
-                                        CameraEnvironment& env) {
+                                        const camera::FrameLayout& layout, CameraEnvironment& env) {
     const auto index = static_cast<std::size_t>(image.buffer_index);
     if (index >= env.imported.size()) env.imported.resize(index + 1);  // once per driver buffer
     gpu::ExternalImage& cached = env.imported[index];
@@ -53,7 +55,7 @@ const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::Camer
              .height = image.height,
              .planes = {{.fd = image.dmabuf_fd, .offset = 0, .pitch = pitch},
                         {.fd = nv12 ? image.dmabuf_fd : -1,
-                         .offset = nv12 ? pitch * static_cast<std::uint32_t>(image.height) : 0,
+                         .offset = static_cast<std::uint32_t>(layout.planes[1].offset),
                          .pitch = pitch}},
              .bt709 = image.matrix == camera::YuvMatrix::Bt709,
              .full_range = image.full_range});
@@ -124,50 +126,54 @@ Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage&
         }
     }
     if (env.failed) return {};
+    // Checked before anything changes: a frame that does not fit its format is not uploaded (and the
+    // colour texture keeps the previous one). The capture drops such frames already; this guards the
+    // GPU, which would read past the end.
+    auto layout = camera::frame_layout(image.layout, image.width, image.height, image.stride);
+    if (!layout)
+        return make_error(ExitCode::Runtime, "camera: frame not uploaded: {}", layout.error().message);
+    if (image.data.size() < layout->bytes)
+        return make_error(ExitCode::Runtime, "camera: frame not uploaded: {} {}x{} in {} bytes, needs {}",
+                          camera::layout_name(image.layout), image.width, image.height, image.data.size(),
+                          layout->bytes);
+    for (int i = 0; i < layout->count; ++i) {
+        const camera::PlaneLayout& p = layout->planes[static_cast<std::size_t>(i)];
+        if (p.stride % p.texel_bytes != 0)  // GL counts row lengths in whole texels
+            return make_error(ExitCode::Runtime,
+                              "camera: frame not uploaded: {} bytesperline {} is not a whole number of "
+                              "{}-byte texels",
+                              camera::layout_name(image.layout), p.stride, p.texel_bytes);
+    }
     env.pending = image;
     env.pending.data = {};
     env.layout = image.layout;
     env.pending_import = nullptr;
     ensure_colour(device, env, image.width, image.height);
-    switch (image.layout) {
-        case PixelLayout::Rgba:
-            env.colour.upload_rows(image.data, image.stride);
-            env.colour.generate_mipmaps();
-            env.convert_due = false;
-            env.has_frame = true;
-            env.cube_due = true;
-            return {};
-        case PixelLayout::Yuyv:
-        case PixelLayout::Nv12:
-            if (env.zero_copy && image.dmabuf_fd >= 0 && env.support.external_sampler)
-                env.pending_import = import_buffer(device, image, env);
-            if (!env.pending_import) {
-                const bool yuyv = image.layout == PixelLayout::Yuyv;
-                if (yuyv &&
-                    image.stride % 4 != 0)  // GL counts row lengths in whole RGBA8 texels (pixel pairs)
-                    return make_error(ExitCode::Runtime,
-                                      "camera: YUYV bytesperline {} is not a whole number of pixel pairs",
-                                      image.stride);
-                ensure_texture(device, env.plane0,
-                               {.label = "camera plane 0",
-                                .format = yuyv ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::R8,
-                                .width = yuyv ? image.width / 2 : image.width,
-                                .height = image.height});
-                env.plane0.upload_rows(image.data, image.stride);
-                if (!yuyv) {
-                    ensure_texture(device, env.plane1,
-                                   {.label = "camera plane 1 (UV)",
-                                    .format = gpu::TextureFormat::RG8,
-                                    .width = image.width / 2,
-                                    .height = image.height / 2});
-                    const auto luma =
-                        static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(image.height);
-                    env.plane1.upload_rows(image.data.subspan(luma), image.stride);
-                }
-            }
-            env.convert_due = true;
-            return {};
+    if (image.layout == PixelLayout::Rgba) {
+        env.colour.upload_rows(image.data, image.stride);
+        env.colour.generate_mipmaps();
+        env.convert_due = false;
+        env.has_frame = true;
+        env.cube_due = true;
+        return {};
     }
+    if (env.zero_copy && image.dmabuf_fd >= 0 && env.support.external_sampler)
+        env.pending_import = import_buffer(device, image, *layout, env);
+    if (!env.pending_import) {
+        // YUYV: one RGBA8 texel per pixel pair. NV12: R8 luma, then RG8 chroma at ceil(w/2) x ceil(h/2).
+        const bool yuyv = image.layout == PixelLayout::Yuyv;
+        const std::array<gpu::TextureFormat, 2> formats{
+            yuyv ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::R8, gpu::TextureFormat::RG8};
+        const std::array<const char*, 2> labels{"camera plane 0", "camera plane 1 (UV)"};
+        const std::array<gpu::Texture*, 2> planes{&env.plane0, &env.plane1};
+        for (std::size_t i = 0; i < static_cast<std::size_t>(layout->count); ++i) {
+            const camera::PlaneLayout& p = layout->planes[i];
+            ensure_texture(device, *planes[i],
+                           {.label = labels[i], .format = formats[i], .width = p.texels, .height = p.rows});
+            planes[i]->upload_rows(image.data.subspan(p.offset), p.stride);
+        }
+    }
+    env.convert_due = true;
     return {};
 }
 

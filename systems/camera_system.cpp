@@ -23,6 +23,7 @@ bool wants_camera(const params::Params& params) {
 
 void close_feed(CameraFeed& feed, CameraEnvironment& env) {
     drop_camera_frames(env);
+    feed.closed_faults = feed.faults();
     feed.source.reset();
 }
 

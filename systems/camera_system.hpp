@@ -28,6 +28,14 @@ struct CameraFeed {
     std::uint64_t frames = 0;  // delivered since start-up
     std::uint64_t losses = 0;  // times a streaming source went away
     bool streaming() const { return source != nullptr; }
+
+    camera::SourceCounters closed_faults;  // of the sources closed so far
+    // Frames dropped and capture errors retried since start-up, the open source's included.
+    camera::SourceCounters faults() const {
+        const camera::SourceCounters open = source ? source->counters() : camera::SourceCounters{};
+        return {.dropped = closed_faults.dropped + open.dropped,
+                .errors = closed_faults.errors + open.errors};
+    }
 };
 
 // What the parameters ask for.

@@ -43,9 +43,28 @@ std::string config_path(const CliOptions& o) {
     return std::filesystem::exists(system_config) ? system_config : "";
 }
 
+// Restores the saved knob state. A bad key is dropped and warned about, one line each, and the valid
+// ones are kept; the original file is then set aside (never overwriting an earlier copy) and rewritten
+// with what was valid. `read_only` (--print-config) reads and warns but changes nothing on disk.
+void restore_saved_state(systems::LiveTuning& tuning, bool read_only) {
+    auto loaded = tuning.state->load();
+    for (const std::string& problem : loaded.problems) spdlog::warn("{}", problem);
+    if (loaded.state) {
+        if (auto r = tuning.layers.restore_state(*loaded.state); !r) spdlog::warn("{}", r.error().message);
+        spdlog::info("state: {} knob value(s) restored from {}", loaded.state->entries.size(),
+                     tuning.state->path());
+    }
+    if (loaded.problems.empty() || read_only) return;
+    auto copy = tuning.state->set_aside();
+    if (!copy) return spdlog::warn("{}; the file is left as it is", copy.error().message);
+    spdlog::warn("state: the original is kept as {}; {} will hold the valid values", *copy,
+                 tuning.state->path());
+    tuning.state_dirty = true;  // saved on the first frame
+}
+
 // The layers of live tuning: defaults < preset < config < knob state < --seed/--set. Start-up errors in
-// the config or a flag are exit code 2; a bad state file is moved aside and only warned about.
-Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
+// the config or a flag are exit code 2; bad saved state is only warned about (restore_saved_state).
+Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     std::vector<params::ConfigEntry> command_line;
     if (o.seed) command_line.push_back({params::ParamId::rain_seed, *o.seed, 0});
     if (!o.camera.empty()) {  // shorthand for the two --set lines it stands for; a --set still wins
@@ -77,12 +96,7 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o) {
     }
     if (!tuning.layers.config().knobs.empty()) {
         tuning.state.emplace(o.state_path.empty() ? params::StateStore::default_path() : o.state_path);
-        auto loaded = tuning.state->load();
-        if (!loaded.warning.empty()) spdlog::warn("{}", loaded.warning);
-        if (loaded.state) {
-            if (auto r = tuning.layers.restore_state(*loaded.state); !r) spdlog::warn("{}", r.error().message);
-            spdlog::info("state: knob values restored from {}", tuning.state->path());
-        }
+        restore_saved_state(tuning, read_only);
         auto gpio = io::make_gpio_backend(o.gpio);
         if (!gpio) return gpio.error();
         tuning.gpio = std::move(*gpio);
@@ -117,7 +131,7 @@ int run(int argc, const char* const* argv) {
         return 0;
     }
     if (o.check) return run_check(o, config_path(o));
-    auto tuning = load_tuning(o);
+    auto tuning = load_tuning(o, o.print_config);
     if (!tuning) return fail(tuning.error());
     const auto params = std::make_unique<params::Params>(tuning->layers.compose());
     if (o.print_config) {

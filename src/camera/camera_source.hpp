@@ -2,6 +2,7 @@
 // Where camera frames come from: a small interface with one implementation per file (a V4L2 device,
 // a mock that plays images), chosen by the device string: "mock:PATH" or a device path.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +14,12 @@
 
 namespace puddle::camera {
 
+// Faults a source absorbed without stopping, since it was opened (for health output and --stats).
+struct SourceCounters {
+    std::uint64_t dropped = 0;  // frames not shown: corrupt MJPEG, shorter than the format, driver-flagged
+    std::uint64_t errors = 0;   // failed capture calls that were retried (EIO from VIDIOC_DQBUF, ...)
+};
+
 class CameraSource {
 public:
     virtual ~CameraSource() = default;
@@ -22,9 +29,13 @@ public:
     virtual Result<std::optional<CameraImage>> poll(double now) = 0;
     // One line for the log: device, format, size.
     virtual std::string describe() const = 0;
+    virtual SourceCounters counters() const { return {}; }
 };
 
 // V4L2 streaming through `io` (MJPEG decoded here; YUYV and NV12 passed on for the GPU to convert).
+// A frame that cannot be shown whole (corrupt MJPEG, a JPEG of another size, a buffer shorter than its
+// format) is dropped, so the reflection keeps the previous one; drops and retried errors are counted
+// and logged at most once a minute each (FaultTally), with poll's `now` as the clock.
 Result<std::unique_ptr<CameraSource>> open_v4l2_source(V4l2Io& io, const CaptureRequest& request);
 // "mock:PATH": an image, or a folder of images played in a loop at `fps` (name order). Errors exit 3.
 Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps);

@@ -14,6 +14,10 @@ namespace puddle::camera {
 
 namespace {
 
+// A mock folder is decoded into memory whole: bound it (256 frames of 640x360, or 32 of 1920x1080).
+constexpr std::size_t mock_max_images = 256;
+constexpr std::size_t mock_max_bytes = std::size_t{256} << 20;
+
 class MockSource final : public CameraSource {
 public:
     MockSource(std::vector<assets::Image> frames, std::string path, double fps)
@@ -56,8 +60,14 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
     std::vector<std::string> files;
     std::error_code ec;
     if (fs::is_directory(path, ec)) {
-        for (const auto& entry : fs::directory_iterator(path, ec))
-            if (entry.is_regular_file()) files.push_back(entry.path().string());
+        for (const auto& entry : fs::directory_iterator(path, ec)) {
+            if (!entry.is_regular_file()) continue;
+            if (files.size() == mock_max_images)  // counted before any is decoded
+                return make_error(ExitCode::Asset,
+                                  "camera: mock:{}: the folder holds more than {} images; the limit is {}",
+                                  path, mock_max_images, mock_max_images);
+            files.push_back(entry.path().string());
+        }
         std::sort(files.begin(), files.end());
         if (files.empty())
             return make_error(ExitCode::Asset, "camera: mock:{}: the folder holds no images", path);
@@ -65,6 +75,7 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
         files.push_back(path);
     }
     std::vector<assets::Image> frames;
+    std::size_t bytes = 0;
     for (const std::string& file : files) {
         auto image = assets::read_image(file);
         if (!image) return make_error(ExitCode::Asset, "camera: mock: {}", image.error().message);
@@ -72,6 +83,11 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
             return make_error(ExitCode::Asset,
                               "camera: mock:{}: {} is {}x{}, the first image is {}x{}; all must match", path,
                               file, image->width, image->height, frames[0].width, frames[0].height);
+        bytes += image->data.size();
+        if (bytes > mock_max_bytes)
+            return make_error(ExitCode::Asset,
+                              "camera: mock:{}: the images up to {} take {} MiB decoded; the limit is {} MiB",
+                              path, file, bytes >> 20, mock_max_bytes >> 20);
         frames.push_back(std::move(image).value());
     }
     return std::unique_ptr<CameraSource>(

@@ -38,4 +38,8 @@ int xioctl(V4l2Io& io, int fd, unsigned long request, void* arg) {
     return r;
 }
 
+bool device_vanished(int err) {
+    return err == ENODEV || err == ENXIO;
+}
+
 }  // namespace puddle::camera

@@ -28,6 +28,11 @@ V4l2Io& system_v4l2_io();
 // ioctl retried while a signal interrupts it (EINTR), as every V4L2 caller must.
 int xioctl(V4l2Io& io, int fd, unsigned long request, void* arg);
 
+// Whether an errno from a call on an open device means the device itself is gone (ENODEV: unplugged;
+// ENXIO: its driver unbound). Anything else (EIO from a USB hiccup, ENOMEM, EINVAL) may pass, and is
+// retried; poll(2) reports a vanished device as POLLERR or POLLHUP instead.
+bool device_vanished(int err);
+
 // A descriptor opened through the seam, closed through it when this dies.
 class DeviceFd {
 public:

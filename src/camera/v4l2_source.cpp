@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "camera/camera_source.hpp"
+#include "camera/fault_tally.hpp"
 #include "camera/mjpeg_decoder.hpp"
 
 namespace puddle::camera {
@@ -13,29 +14,35 @@ namespace {
 class V4l2Source final : public CameraSource {
 public:
     V4l2Source(V4l2Capture capture, std::string device)
-        : capture_(std::move(capture)), device_(std::move(device)) {}
+        : capture_(std::move(capture)),
+          device_(device),
+          dropped_(device, fmt::format("corrupt {} frame dropped", format_name()),
+                   fmt::format("corrupt {} frames dropped", format_name())),
+          errors_(std::move(device), "capture error retried", "capture errors retried") {}
 
-    Result<std::optional<CameraImage>> poll(double) override {
+    Result<std::optional<CameraImage>> poll(double now) override {
+        const std::uint64_t dropped = capture_.dropped(), errors = capture_.errors();
         auto polled = capture_.poll();
+        report(errors_.record(now, capture_.errors() - errors, capture_.last_error()));
+        report(dropped_.record(now, capture_.dropped() - dropped, capture_.last_drop_reason()));
         if (!polled) return polled.error();
         if (!*polled) return std::optional<CameraImage>{};
         const CapturedBuffer& buf = **polled;
         CameraImage image = capture_.format();
         image.buffer_index = buf.index;
-        image.sequence = ++sequence_;
         if (buf.fourcc == V4L2_PIX_FMT_MJPEG) {
             if (auto r = decoder_.decode(buf.bytes, image.width, image.height); !r) {
-                // One bad frame is not a lost device: skip it, say so once.
-                if (!warned_) spdlog::warn("{} (skipping bad frames)", r.error().message);
-                warned_ = true;
+                // Not shown: the reflection keeps the last whole frame.
+                report(dropped_.record(now, 1, r.error().message));
                 return std::optional<CameraImage>{};
             }
             image.data = decoder_.rgba();
             image.stride = image.width * 4;
-            return std::optional<CameraImage>(image);
+        } else {
+            image.data = buf.bytes;
+            image.dmabuf_fd = buf.dmabuf_fd;
         }
-        image.data = buf.bytes;
-        image.dmabuf_fd = buf.dmabuf_fd;
+        image.sequence = ++sequence_;
         return std::optional<CameraImage>(image);
     }
 
@@ -50,12 +57,23 @@ public:
                            f.full_range ? "full" : "limited");
     }
 
+    SourceCounters counters() const override {
+        return {.dropped = dropped_.total(), .errors = errors_.total()};
+    }
+
 private:
+    std::string format_name() const {
+        return capture_.fourcc() == V4L2_PIX_FMT_MJPEG ? "MJPEG" : fourcc_name(capture_.fourcc());
+    }
+    static void report(const std::optional<std::string>& line) {
+        if (line) spdlog::warn("{}", *line);
+    }
+
     V4l2Capture capture_;
     std::string device_;
     MjpegDecoder decoder_;
+    FaultTally dropped_, errors_;
     std::uint64_t sequence_ = 0;
-    bool warned_ = false;
 };
 
 }  // namespace

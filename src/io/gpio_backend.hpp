@@ -70,7 +70,8 @@ Result<std::unique_ptr<GpioBackend>> make_gpio_backend(std::string_view spec);
 
 // The one-line message for a failed request: what, where, and how to fix it.
 Error gpio_request_error(const LineRequest& request, int err);
-// True when every character is a digit (a line offset or chip number rather than a name).
+// True when every character is a digit and there are at most 9 (a line offset or chip number rather than a
+// name; std::stoi on it cannot overflow).
 bool is_number(std::string_view text);
 // A line given as an offset ("17"): its value; nothing for a name ("GPIO17") or for digits past any
 // chip's lines (more than 65535), which must fail as "no such line" rather than overflow an int.

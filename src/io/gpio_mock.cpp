@@ -17,6 +17,8 @@ namespace puddle::io {
 namespace {
 constexpr int mock_line_count = 64;
 constexpr std::size_t queue_size = 64;  // like the kernel's event FIFO: the oldest edges drop when full
+constexpr std::size_t max_script_line = 4096;          // a command is a few words
+constexpr std::size_t max_script_pending = 64 * 1024;  // read ahead, at most
 }  // namespace
 
 struct MockGpio::Chip {
@@ -173,10 +175,18 @@ bool MockGpio::command(std::string_view text, double now) {
 void MockGpio::poll(double now) {
     if (fd_ < 0) return;
     char buffer[1024];
-    for (;;) {
+    // A huge script is read over several frames, never all at once into memory.
+    while (pending_.size() < max_script_pending) {
         const ssize_t n = ::read(fd_, buffer, sizeof buffer);
         if (n <= 0) break;
-        pending_.append(buffer, static_cast<std::size_t>(n));
+        std::string_view chunk(buffer, static_cast<std::size_t>(n));
+        if (skipping_long_line_) {  // the rest of a line that was too long to be a command
+            const auto nl = chunk.find('\n');
+            if (nl == std::string_view::npos) continue;
+            chunk.remove_prefix(nl + 1);
+            skipping_long_line_ = false;
+        }
+        pending_.append(chunk);
     }
     if (now < resume_at_) return;
     std::size_t start = 0;
@@ -192,6 +202,12 @@ void MockGpio::poll(double now) {
             spdlog::warn("gpio: mock script {}: not a command: '{}'", script_, line);
     }
     pending_.erase(0, start);
+    if (pending_.size() > max_script_line && pending_.find('\n') == std::string::npos) {
+        spdlog::warn("gpio: mock script {}: a line longer than {} bytes is not a command; skipped it",
+                     script_, max_script_line);
+        pending_.clear();
+        skipping_long_line_ = true;
+    }
 }
 
 }  // namespace puddle::io

@@ -11,6 +11,8 @@
 //   wait 0.5              run the rest of the script half a second later
 //   # ...                 a comment
 //
+// A line longer than 4 KiB is skipped with a warning, and at most 64 KiB of the script is read ahead.
+//
 // There is a chip gpiochip0 (label "mock-gpio") from the start. Line names are GPIO<offset>. A line
 // nobody drove sits at its bias: high with pull-up, else low.
 
@@ -45,7 +47,8 @@ private:
     std::map<std::string, std::shared_ptr<Chip>> chips_;
     std::string script_;
     int fd_ = -1;
-    std::string pending_;  // a partial script line
+    std::string pending_;  // script text read but not yet run
+    bool skipping_long_line_ = false;
     double last_time_ = 0;
     double resume_at_ = 0;  // after a `wait`
 };

@@ -1,15 +1,14 @@
 #include "params/config_loader.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "params/knob_spec_parse.hpp"
+#include "params/toml_limits.hpp"
 
 namespace puddle::params {
 
@@ -17,36 +16,61 @@ namespace {
 
 int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
 
-// Converts a TOML node to the declared kind; returns nullopt when the TOML type cannot be that kind.
-std::optional<ParamValue> convert(const ParamDecl& d, const toml::node& n) {
+// The value as written, on one line: numbers in their shortest form (1e+300, not toml++'s
+// 1.0000000000000001e+300), arrays as [1, 2, 3].
+std::string toml_text(const toml::node& n) {
+    if (auto i = n.value_exact<int64_t>()) return fmt::format("{}", *i);
+    if (auto f = n.value_exact<double>()) return fmt::format("{}", *f);
+    if (const toml::array* a = n.as_array()) {
+        std::string out = "[";
+        for (const toml::node& e : *a) out += (out.size() > 1 ? ", " : "") + toml_text(e);
+        return out + "]";
+    }
+    std::ostringstream out;
+    n.visit([&](auto&& v) { out << v; });
+    return out.str();
+}
+
+// Converts a TOML node to the declared kind. Numbers (toml++ gives int64 or double) are checked against
+// the range before they are narrowed (number_value); the error names the key and the value as written.
+Result<ParamValue> convert(const ParamDecl& d, const toml::node& n) {
+    auto wrong_type = [&] {
+        return make_error(ExitCode::Config, "{} = {} has the wrong type: expected {}", d.name, toml_text(n),
+                          describe_range(d));
+    };
+    auto number = [&]() -> Result<ParamValue> {
+        if (auto i = n.value_exact<int64_t>()) return number_value(d, *i);
+        if (auto f = n.value_exact<double>()) return number_value(d, *f);
+        return wrong_type();
+    };
     switch (d.kind) {
         case ParamKind::Bool:
             if (auto b = n.value_exact<bool>()) return ParamValue(*b);
-            return std::nullopt;
+            return wrong_type();
         case ParamKind::Int:
-            if (auto i = n.value_exact<int64_t>()) {
-                if (*i < INT32_MIN || *i > INT32_MAX) return ParamValue(static_cast<int>(*i > 0 ? INT32_MAX : INT32_MIN));
-                return ParamValue(static_cast<int>(*i));
-            }
-            return std::nullopt;
+            if (n.is_floating_point()) return wrong_type();  // 2.5 is not an integer, not even 2.0
+            return number();
         case ParamKind::Float:
-            if (auto f = n.value<double>()) return ParamValue(static_cast<float>(*f));  // ints are fine too
-            return std::nullopt;
+            return number();
         case ParamKind::Vec3:
         case ParamKind::Color: {
             const toml::array* a = n.as_array();
-            if (!a || a->size() != 3) return std::nullopt;
+            if (!a || a->size() != 3) return wrong_type();
             glm::vec3 c{};
             for (std::size_t i = 0; i < 3; ++i) {
-                auto f = (*a)[i].value<double>();
-                if (!f) return std::nullopt;
-                c[static_cast<int>(i)] = static_cast<float>(*f);
+                const toml::node& e = (*a)[i];
+                std::optional<double> x = e.value_exact<double>();
+                if (auto whole = e.value_exact<int64_t>()) x = static_cast<double>(*whole);
+                if (!x) return wrong_type();
+                // Past a float's range is out of range as written, not infinity; validate() checks the rest.
+                if (!std::isfinite(static_cast<float>(*x))) return out_of_range(d, toml_text(n));
+                c[static_cast<int>(i)] = static_cast<float>(*x);
             }
             return ParamValue(c);
         }
         case ParamKind::Enum:
             if (auto s = n.value_exact<std::string>()) return ParamValue(*s);
-            return std::nullopt;
+            return wrong_type();
         case ParamKind::Path:
             if (auto s = n.value_exact<std::string>()) return ParamValue(*s);
             // Six cubemap faces may be given as an array of paths; they travel joined by '|'.
@@ -54,43 +78,44 @@ std::optional<ParamValue> convert(const ParamDecl& d, const toml::node& n) {
                 std::string joined;
                 for (const toml::node& e : *a) {
                     auto s = e.value_exact<std::string>();
-                    if (!s) return std::nullopt;
+                    if (!s) return wrong_type();
                     joined += (joined.empty() ? "" : "|") + *s;
                 }
                 return ParamValue(joined);
             }
-            return std::nullopt;
+            return wrong_type();
     }
-    return std::nullopt;
+    return wrong_type();
 }
 
-std::string toml_text(const toml::node& n) {
-    std::ostringstream out;
-    n.visit([&](auto&& v) { out << v; });
-    return out.str();
-}
+// Every key of a file: the valid ones in `config`, one error per bad one (with its line).
+struct Parsed {
+    Config config;
+    std::vector<std::pair<int, Error>> problems;
+};
 
-}  // namespace
-
-Result<Config> parse_config(std::string_view text, std::string_view path) {
-    Config config{std::string(path), {}};
+// Reads every key of `text`. Fails only where no key can be trusted: past the input limits, or not TOML.
+Result<Parsed> parse_all(std::string_view text, std::string_view path) {
+    if (auto r = check_toml_limits(text, path); !r) return r.error();
+    Parsed out;
+    Config& config = out.config;
+    config.path = std::string(path);
     toml::table root;
     try {
         root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         return make_error(ExitCode::Config, "config: {}:{}: {}", path, e.source().begin.line, e.description());
     }
-    // toml++ visits keys in name order; report the problem nearest the top of the file, as people read it.
-    std::optional<std::pair<int, Error>> first_problem;
-    auto problem = [&](int line, Error e) {
-        if (!first_problem || line < first_problem->first) first_problem.emplace(line, std::move(e));
-    };
+    auto problem = [&](int line, Error e) { out.problems.emplace_back(line, std::move(e)); };
     for (auto&& [section_key, section_node] : root) {
         if (section_key.str() == "preset") {
             auto name = section_node.value_exact<std::string>();
             if (!name || name->empty())
-                problem(line_of(section_node), make_error(ExitCode::Config, "config: {}:{}: preset must be a preset's name, e.g. preset = \"downpour\"",
-                                                          path, line_of(section_node)));
+                problem(
+                    line_of(section_node),
+                    make_error(ExitCode::Config,
+                               "config: {}:{}: preset must be a preset's name, e.g. preset = \"downpour\"",
+                               path, line_of(section_node)));
             else
                 config.preset = *name, config.preset_line = line_of(section_node);
             continue;
@@ -98,8 +123,15 @@ Result<Config> parse_config(std::string_view text, std::string_view path) {
         if (section_key.str() == "knob") {
             const toml::array* knobs = section_node.as_array();
             if (!knobs || !knobs->is_array_of_tables()) {
-                problem(line_of(section_node), make_error(ExitCode::Config, "config: {}:{}: knobs are written as [[knob]] tables",
-                                                          path, line_of(section_node)));
+                problem(line_of(section_node),
+                        make_error(ExitCode::Config, "config: {}:{}: knobs are written as [[knob]] tables",
+                                   path, line_of(section_node)));
+                continue;
+            }
+            if (knobs->size() > max_knobs) {
+                problem(line_of(section_node),
+                        make_error(ExitCode::Config, "config: {}:{}: {} [[knob]] tables; the limit is {}",
+                                   path, line_of(section_node), knobs->size(), max_knobs));
                 continue;
             }
             int index = 0;
@@ -122,37 +154,52 @@ Result<Config> parse_config(std::string_view text, std::string_view path) {
             const std::string name = fmt::format("{}.{}", section_key.str(), key.str());
             const ParamDecl* d = find_param(name);
             if (!d) {
-                problem(line_of(node), make_error(ExitCode::Config, "config: {}:{}: unknown key '{}' (did you mean '{}'?)",
-                                                  path, line_of(node), name, nearest_param_name(name)));
+                problem(line_of(node),
+                        make_error(ExitCode::Config, "config: {}:{}: unknown key '{}' (did you mean '{}'?)",
+                                   path, line_of(node), name, nearest_param_name(name)));
                 continue;
             }
             auto value = convert(*d, node);
-            if (!value) {
-                problem(line_of(node),
-                        make_error(ExitCode::Config, "config: {}:{}: {} = {} has the wrong type: expected {}", path,
-                                   line_of(node), name, toml_text(node), describe_range(*d)));
-                continue;
+            if (value) {
+                if (auto ok = validate(*d, *value); !ok) value = ok.error();
             }
-            if (auto ok = validate(*d, *value); !ok) {
-                problem(line_of(node),
-                        make_error(ExitCode::Config, "config: {}:{}: {}", path, line_of(node), ok.error().message));
+            if (!value) {
+                problem(line_of(node), make_error(ExitCode::Config, "config: {}:{}: {}", path, line_of(node),
+                                                  value.error().message));
                 continue;
             }
             config.entries.push_back({d->id, std::move(*value), line_of(node)});
         }
     }
-    if (first_problem) return first_problem->second;
+    // toml++ visits keys in name order; report problems and keep entries in file order, as people read it.
+    std::stable_sort(out.problems.begin(), out.problems.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
     std::sort(config.entries.begin(), config.entries.end(),
               [](const ConfigEntry& a, const ConfigEntry& b) { return a.line < b.line; });
-    return config;
+    return out;
+}
+
+}  // namespace
+
+Result<Config> parse_config(std::string_view text, std::string_view path) {
+    auto parsed = parse_all(text, path);
+    if (!parsed) return parsed.error();
+    if (!parsed->problems.empty()) return parsed->problems.front().second;
+    return std::move(parsed->config);
+}
+
+Result<PartialConfig> parse_config_keeping_valid(std::string_view text, std::string_view path) {
+    auto parsed = parse_all(text, path);
+    if (!parsed) return parsed.error();
+    PartialConfig out{std::move(parsed->config), {}};
+    for (auto& [line, e] : parsed->problems) out.dropped.push_back(std::move(e.message));
+    return out;
 }
 
 Result<Config> load_config_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return make_error(ExitCode::Config, "config: {}: cannot open: {}", path, std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_config(text.str(), path);
+    auto text = read_toml_file(path);
+    if (!text) return text.error();
+    return parse_config(*text, path);
 }
 
 void apply_config(const Config& config, Params& params, ParamSource source) {

@@ -29,9 +29,23 @@ struct Config {
     std::vector<KnobSpec> knobs;        // `[[knob]]` tables
 };
 
-// `path` is used in messages only.
+// At most this many [[knob]] tables: each holds GPIO lines and a queue of events.
+inline constexpr std::size_t max_knobs = 64;
+
+// `path` is used in messages only. The text is checked against toml_limits (toml_limits.hpp) before it is
+// parsed.
 Result<Config> parse_config(std::string_view text, std::string_view path);
+// The file is read with read_toml_file: at most 1 MiB.
 Result<Config> load_config_file(const std::string& path);
+
+// For the saved state, which is the user's data: a bad key (unknown, wrong type, out of range, a [[knob]]
+// table that does not parse) is left out and reported, one line each in file order, and every valid key
+// is kept. Fails only when no key can be trusted: past the input limits, or not TOML.
+struct PartialConfig {
+    Config config;
+    std::vector<std::string> dropped;  // "config: PATH:LINE: unknown key 'rain.wind' (did you mean ...?)"
+};
+Result<PartialConfig> parse_config_keeping_valid(std::string_view text, std::string_view path);
 // Applies every entry with the given source (precedence rules of Params::set apply).
 void apply_config(const Config& config, Params& params, ParamSource source = ParamSource::Config);
 // `--set name=value`: parse, validate, and name the flag in errors.

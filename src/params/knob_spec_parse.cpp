@@ -1,7 +1,10 @@
 #include "params/knob_spec_parse.hpp"
 
-#include <array>
 #include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <sstream>
 
 namespace puddle::params {
 
@@ -12,11 +15,25 @@ constexpr std::array known_keys{"kind",   "chip",   "line",   "a",          "b",
 
 int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
 
-// A line is an offset (17) or a line name ("GPIO17").
+std::string as_written(const toml::node& n) {
+    std::ostringstream out;
+    n.visit([&](auto&& v) { out << v; });
+    return out.str();
+}
+
+constexpr int max_line_offset = 4095;
+constexpr std::size_t max_line_name_bytes = 64;  // the kernel's GPIO_MAX_NAME_SIZE is 32
+
+// A line is an offset (17, or "17") or a line name ("GPIO17"); an offset is checked as written, before
+// anything narrows it.
 std::optional<std::string> line_ref(const toml::node& n) {
-    if (auto i = n.value_exact<int64_t>(); i && *i >= 0 && *i < 4096) return std::to_string(*i);
-    if (auto s = n.value_exact<std::string>(); s && !s->empty()) return *s;
-    return std::nullopt;
+    if (auto i = n.value_exact<int64_t>(); i && *i >= 0 && *i <= max_line_offset) return std::to_string(*i);
+    auto s = n.value_exact<std::string>();
+    if (!s || s->empty() || s->size() > max_line_name_bytes) return std::nullopt;
+    if (s->find_first_not_of("0123456789") == std::string::npos &&
+        (s->size() > 4 || std::stoi(*s) > max_line_offset))
+        return std::nullopt;
+    return *s;
 }
 
 template <typename E, std::size_t N>
@@ -57,7 +74,10 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
         const toml::node* n = table.get(key);
         if (!n) return fail(0, fmt::format("'{}' is missing: the line offset (17) or line name (\"GPIO17\")", key));
         auto ref = line_ref(*n);
-        if (!ref) return fail(line_of(*n), fmt::format("{} must be a line offset (0 to 4095) or a line name", key));
+        if (!ref)
+            return fail(line_of(*n),
+                        fmt::format("{} must be a line offset (0 to {}) or a line name (at most {} bytes)",
+                                    key, max_line_offset, max_line_name_bytes));
         out = *ref;
         return {};
     };
@@ -98,19 +118,25 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
     } else if (k.kind == KnobKind::Button) {
         return fail(0, "a button needs an action: \"next-preset\", \"previous-preset\", \"reset\", \"toggle\" or \"save\"");
     }
-    auto number = [&](const char* key, double lo, double hi, double& out) -> Result<void> {
+    // Numbers are checked as written (an int64 or a double) before they are stored; the message names the
+    // key, the value and the range.
+    auto number = [&](const char* key, double lo, double hi, bool whole, double& out) -> Result<void> {
         const toml::node* n = table.get(key);
         if (!n) return {};
-        auto v = n->value<double>();
-        if (!v || !(*v >= lo && *v <= hi)) return fail(line_of(*n), fmt::format("{} must be a number, {} to {}", key, lo, hi));
+        std::optional<double> v = n->value_exact<double>();
+        if (auto i = n->value_exact<int64_t>()) v = static_cast<double>(*i);
+        if (!v || (whole && !n->is_integer()) || !(*v >= lo && *v <= hi))
+            return fail(line_of(*n),
+                        fmt::format("{} = {} is not allowed: {} from {} to {}", key, as_written(*n),
+                                    whole ? "a whole number" : "a number", lo, hi));
         out = *v;
         return {};
     };
-    if (auto r = number("step", 0, 1e6, k.step); !r) return r.error();
-    if (auto r = number("acceleration", 0, 100, k.acceleration); !r) return r.error();
+    if (auto r = number("step", 0, 1e6, false, k.step); !r) return r.error();
+    if (auto r = number("acceleration", 0, 100, false, k.acceleration); !r) return r.error();
     double debounce = k.debounce_ms;
-    if (auto r = number("debounce_ms", 0, 1000, debounce); !r) return r.error();
-    k.debounce_ms = static_cast<int>(debounce);
+    if (auto r = number("debounce_ms", 0, 1000, true, debounce); !r) return r.error();
+    k.debounce_ms = static_cast<int>(debounce);  // whole and within 0..1000: exact
 
     const ParamDecl* target = k.param ? &decl(*k.param) : nullptr;
     const bool numeric = target && (target->kind == ParamKind::Int || target->kind == ParamKind::Float);
@@ -118,6 +144,14 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
     switch (k.kind) {
         case KnobKind::Encoder:
             if (!numeric) return fail(0, "an encoder needs param = a number parameter (e.g. \"rain.intensity\")");
+            if (k.step > target->max - target->min)
+                return fail(line_of(*table.get("step")),
+                            fmt::format("step = {} is larger than the whole range of {} ({} to {})", k.step,
+                                        target->name, target->min, target->max));
+            if (target->kind == ParamKind::Int && k.step != std::floor(k.step))
+                return fail(line_of(*table.get("step")),
+                            fmt::format("step = {} is not a whole number, and {} is an integer", k.step,
+                                        target->name));
             if (k.step == 0) k.step = (target->max - target->min) / 50.0;
             if (target->kind == ParamKind::Int && k.step < 1) k.step = 1;
             break;

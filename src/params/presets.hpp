@@ -4,6 +4,7 @@
 // preset folder (/etc/puddle/presets/, or presets/ beside the config file) adds a look or replaces a
 // built-in one of the same name.
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,6 +23,9 @@ std::span<const EmbeddedPreset> embedded_presets();  // generated
 
 class Presets {
 public:
+    // Preset files read from one folder, at most (each up to 1 MiB, toml_limits.hpp).
+    static constexpr std::size_t max_preset_files = 64;
+
     // The built-in presets, then `*.toml` files in each folder that exists.
     static Presets load(std::span<const std::string> folders);
     // Sorted names.
@@ -36,6 +40,7 @@ public:
 private:
     struct Entry {
         std::string name, origin, text;
+        std::optional<Error> read_error;  // the file could not be read (or is past the input limits)
     };
     std::vector<Entry> entries_;
     std::vector<std::string> names_;

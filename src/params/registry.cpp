@@ -1,10 +1,11 @@
 #include "params/registry.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-
-#include <fmt/format.h>
+#include <limits>
 
 namespace puddle::params {
 
@@ -44,21 +45,63 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
+// std::errc() when all of `s` is one number; result_out_of_range when it is a number too large for T;
+// invalid_argument otherwise.
 template <class T>
-bool parse_number(std::string_view s, T& out) {
+std::errc parse_number(std::string_view s, T& out) {
     s = trim(s);
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
     const char* end = s.data() + s.size();
     auto [ptr, ec] = std::from_chars(s.data(), end, out);
-    return ec == std::errc() && ptr == end && !s.empty();
+    if (s.empty() || ptr != end) return std::errc::invalid_argument;
+    return ec;
 }
 
 Error range_error(const ParamDecl& d, const ParamValue& v) {
-    return make_error(ExitCode::Config, "{} = {} is out of range: allowed {}", d.name, format_value(v),
+    return out_of_range(d, format_value(v));
+}
+
+Error wrong_type(const ParamDecl& d, std::string_view written) {
+    return make_error(ExitCode::Config, "{} = {} has the wrong type: expected {}", d.name, written,
                       describe_range(d));
 }
 
+// Whether `v` is inside the declared range once stored as a float: a finite float, compared at float
+// precision (6.2831853 is stored as 6.28318548, and that must read back in range).
+bool float_in_range(const ParamDecl& d, double v) {
+    const auto f = static_cast<float>(v);
+    return std::isfinite(v) && std::isfinite(f) && f >= static_cast<float>(d.min) &&
+           f <= static_cast<float>(d.max);
+}
+
 }  // namespace
+
+Error out_of_range(const ParamDecl& d, std::string_view written) {
+    return make_error(ExitCode::Config, "{} = {} is out of range: allowed {}", d.name, written,
+                      describe_range(d));
+}
+
+Result<ParamValue> number_value(const ParamDecl& d, std::int64_t v) {
+    switch (d.kind) {
+        case ParamKind::Int:
+            // Both checks, so that an int64 that passes converts exactly whatever the declared range.
+            if (static_cast<double>(v) < d.min || static_cast<double>(v) > d.max ||
+                v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+                return out_of_range(d, fmt::format("{}", v));
+            return ParamValue(static_cast<int>(v));
+        case ParamKind::Float:
+            if (!float_in_range(d, static_cast<double>(v))) return out_of_range(d, fmt::format("{}", v));
+            return ParamValue(static_cast<float>(v));
+        default:
+            return wrong_type(d, fmt::format("{}", v));
+    }
+}
+
+Result<ParamValue> number_value(const ParamDecl& d, double v) {
+    if (d.kind != ParamKind::Float) return wrong_type(d, fmt::format("{}", v));
+    if (!float_in_range(d, v)) return out_of_range(d, fmt::format("{}", v));
+    return ParamValue(static_cast<float>(v));
+}
 
 std::string_view nearest_param_name(std::string_view name) {
     std::string_view best;
@@ -112,10 +155,7 @@ std::string format_value(const ParamValue& v) {
 }
 
 Result<void> validate(const ParamDecl& d, const ParamValue& v) {
-    auto wrong_kind = [&] {
-        return make_error(ExitCode::Config, "{} = {} has the wrong type: expected {}", d.name, format_value(v),
-                          describe_range(d));
-    };
+    auto wrong_kind = [&] { return wrong_type(d, format_value(v)); };
     switch (d.kind) {
         case ParamKind::Bool:
             if (!std::holds_alternative<bool>(v)) return wrong_kind();
@@ -128,9 +168,7 @@ Result<void> validate(const ParamDecl& d, const ParamValue& v) {
         }
         case ParamKind::Float: {
             if (!std::holds_alternative<float>(v)) return wrong_kind();
-            const float f = std::get<float>(v);
-            if (!std::isfinite(f) || f < static_cast<float>(d.min) || f > static_cast<float>(d.max))
-                return range_error(d, v);
+            if (!float_in_range(d, std::get<float>(v))) return range_error(d, v);
             return {};
         }
         case ParamKind::Vec3:
@@ -138,8 +176,7 @@ Result<void> validate(const ParamDecl& d, const ParamValue& v) {
             if (!std::holds_alternative<glm::vec3>(v)) return wrong_kind();
             const glm::vec3 c = std::get<glm::vec3>(v);
             for (int i = 0; i < 3; ++i)
-                if (!std::isfinite(c[i]) || c[i] < static_cast<float>(d.min) || c[i] > static_cast<float>(d.max))
-                    return range_error(d, v);
+                if (!float_in_range(d, c[i])) return range_error(d, v);
             return {};
         }
         case ParamKind::Enum: {
@@ -167,29 +204,44 @@ Result<ParamValue> parse_value(const ParamDecl& d, std::string_view text) {
             else ok = false;
             break;
         case ParamKind::Int: {
-            int i = 0;
-            ok = parse_number(s, i);
-            v = i;
+            std::int64_t i = 0;
+            if (const auto ec = parse_number(s, i); ec == std::errc::result_out_of_range)
+                return out_of_range(d, s);
+            else if (ec != std::errc())
+                ok = false;
+            else
+                return number_value(d, i);
             break;
         }
         case ParamKind::Float: {
-            float f = 0;
-            ok = parse_number(s, f);
-            v = f;
+            double f = 0;
+            if (const auto ec = parse_number(s, f); ec == std::errc::result_out_of_range)
+                return out_of_range(d, s);
+            else if (ec != std::errc())
+                ok = false;
+            else
+                return number_value(d, f);
             break;
         }
         case ParamKind::Vec3:
         case ParamKind::Color: {
             std::string_view rest = s;
             if (rest.starts_with('[') && rest.ends_with(']')) rest = rest.substr(1, rest.size() - 2);
-            glm::vec3 c{};
+            double c[3] = {};
             for (int i = 0; i < 3 && ok; ++i) {
                 const auto comma = rest.find(',');
                 if ((i < 2) == (comma == std::string_view::npos)) ok = false;
-                else ok = parse_number(rest.substr(0, comma), c[i]);
+                else if (const auto ec = parse_number(rest.substr(0, comma), c[i]);
+                         ec == std::errc::result_out_of_range)
+                    return out_of_range(d, s);
+                else
+                    ok = ec == std::errc();
                 rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
             }
-            v = c;
+            // 1e39 does not fit a float: out of range as written, not infinity (validate checks the rest).
+            for (double x : c)
+                if (ok && !std::isfinite(static_cast<float>(x))) return out_of_range(d, s);
+            v = glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
             break;
         }
         case ParamKind::Enum:

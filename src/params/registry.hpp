@@ -50,6 +50,15 @@ std::string describe_range(const ParamDecl& d);
 std::string format_value(const ParamValue& v);
 // Checks kind and range; the error says what is allowed (the caller adds file:line or the flag).
 Result<void> validate(const ParamDecl& d, const ParamValue& v);
+// A number as a source read it (TOML, --set, a state file: a 64-bit integer or a double), checked against
+// the declared kind and range *before* it is narrowed to the stored int or float, so 4294967297 is an
+// error naming 4294967297, never 2147483647. Float ranges are compared at float precision, the precision
+// the value is kept in. An integer is fine for a float parameter; a double is not for an int one.
+Result<ParamValue> number_value(const ParamDecl& d, std::int64_t v);
+Result<ParamValue> number_value(const ParamDecl& d, double v);
+// "rain.seed = 4294967297 is out of range: allowed an integer from 0 to 2147483647"; `written` is the
+// value as the source wrote it.
+Error out_of_range(const ParamDecl& d, std::string_view written);
 // Parses a command-line value ("12", "0.5", "true", "0.1,0.2,0.3", "raymarch") and validates it.
 Result<ParamValue> parse_value(const ParamDecl& d, std::string_view text);
 

@@ -3,14 +3,13 @@
 // kms_display.cpp, window_display.cpp), chosen at start-up by create_display() in backend_select.cpp.
 // Each backend owns its EGL context; after creation the context is current on the calling thread.
 
+#include <glm/vec2.hpp>
 #include <memory>
 #include <string>
 #include <string_view>
 
-#include <glm/vec2.hpp>
-
-#include "gpu/frame_target.hpp"
 #include "gpu/device.hpp"
+#include "gpu/frame_target.hpp"
 #include "util/result.hpp"
 
 namespace puddle::platform {
@@ -20,11 +19,11 @@ std::string_view backend_name(BackendKind k);
 
 struct DisplayOptions {
     BackendKind backend = BackendKind::Auto;
-    glm::ivec2 size{0, 0};       // 0x0: the mode's or window's natural size (headless: 640x360)
-    bool fullscreen = false;     // window backend: ask the window manager for fullscreen
-    std::string card;            // kms: "/dev/dri/card1"; empty = the first card that can modeset
-    std::string connector;       // kms: "HDMI-A-1"; empty = the first connected connector
-    std::string mode;            // kms: "1920x1080" or "1920x1080@60"; empty = the preferred mode
+    glm::ivec2 size{0, 0};    // 0x0: the mode's or window's natural size (headless: 640x360)
+    bool fullscreen = false;  // window backend: ask the window manager for fullscreen
+    std::string card;         // kms: "/dev/dri/card1"; empty = the first card that can modeset
+    std::string connector;    // kms: "HDMI-A-1"; empty = the first connected connector
+    std::string mode;         // kms: "1920x1080" or "1920x1080@60"; empty = the preferred mode
 };
 
 class Display {
@@ -36,7 +35,8 @@ public:
 
     // Called once the Device exists; a backend that renders offscreen makes its target here.
     virtual void prepare(gpu::Device& /*device*/) {}
-    // Makes this display's EGL context current on the calling thread (a process may hold several, as tests do).
+    // Makes this display's EGL context current on the calling thread (a process may hold several, as tests
+    // do).
     virtual void make_current() = 0;
     virtual BackendKind kind() const = 0;
     virtual glm::ivec2 size() const = 0;
@@ -46,8 +46,21 @@ public:
     virtual bool poll_events() = 0;
     // Shows the frame drawn into frame_target(): swap buffers, or a vblank-paced page flip.
     virtual Result<void> present() = 0;
+    // Switches the output off (no signal: the monitor's power saving, a TV's "no input") and on again
+    // with the same mode. While off, present() shows nothing and returns at once. kms: the connector's
+    // DPMS property (the kernel's atomic helpers turn it into CRTC ACTIVE = 0), and a full modeset on the
+    // first frame after; window and headless have no output to switch, so they keep presenting and the
+    // caller draws black. Errors name the card, the connector and the call.
+    virtual Result<void> set_power(bool on) {
+        powered_ = on;
+        return {};
+    }
+    bool powered() const { return powered_; }
     // One line for the start-up log: device, connector, mode, size.
     virtual std::string describe() const = 0;
+
+protected:
+    bool powered_ = true;
 };
 
 // One factory per backend file.
@@ -57,8 +70,8 @@ Result<std::unique_ptr<Display>> create_window_display(const DisplayOptions& opt
 
 // kms_display.cpp: a /dev/dri/card* that can modeset and that nobody else holds, or why there is none.
 struct KmsProbe {
-    std::string card;     // empty when none is usable
-    std::string reason;   // why it was chosen or why none was
+    std::string card;    // empty when none is usable
+    std::string reason;  // why it was chosen or why none was
 };
 KmsProbe probe_kms(const std::string& preferred_card);
 

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "platform/display.hpp"
+#include "platform/drm_inventory.hpp"
 #include "platform/egl_context.hpp"
 
 namespace puddle::platform {
@@ -72,6 +73,8 @@ using ResourcesPtr = std::unique_ptr<drmModeRes, FreeWith<drmModeFreeResources>>
 using ConnectorPtr = std::unique_ptr<drmModeConnector, FreeWith<drmModeFreeConnector>>;
 using EncoderPtr = std::unique_ptr<drmModeEncoder, FreeWith<drmModeFreeEncoder>>;
 using CrtcPtr = std::unique_ptr<drmModeCrtc, FreeWith<drmModeFreeCrtc>>;
+using PropertiesPtr = std::unique_ptr<drmModeObjectProperties, FreeWith<drmModeFreeObjectProperties>>;
+using PropertyPtr = std::unique_ptr<drmModePropertyRes, FreeWith<drmModeFreeProperty>>;
 using GbmDevicePtr = std::unique_ptr<gbm_device, FreeWith<gbm_device_destroy>>;
 using GbmSurfacePtr = std::unique_ptr<gbm_surface, FreeWith<gbm_surface_destroy>>;
 
@@ -82,30 +85,6 @@ Result<UniqueFd> open_card(const std::string& path) {
 }
 
 // /dev/dri/card0, card1, ... in numeric order (card10 after card2).
-std::vector<std::string> list_cards() {
-    std::vector<std::pair<int, std::string>> cards;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", ec)) {
-        const std::string name = entry.path().filename().string();
-        if (!name.starts_with("card")) continue;
-        int number = 0;
-        const char* digits = name.data() + 4;
-        const auto [end, err] = std::from_chars(digits, name.data() + name.size(), number);
-        if (err != std::errc{} || end != name.data() + name.size()) continue;
-        cards.emplace_back(number, entry.path().string());
-    }
-    std::sort(cards.begin(), cards.end());
-    std::vector<std::string> paths;
-    for (auto& card : cards) paths.push_back(std::move(card.second));
-    return paths;
-}
-
-// "HDMI-A-1", "DP-2", "Virtual-1": the names the kernel and xrandr use.
-std::string connector_name(const drmModeConnector& c) {
-    const char* type = drmModeGetConnectorTypeName(c.connector_type);
-    return fmt::format("{}-{}", type ? type : "Unknown", c.connector_type_id);
-}
-
 std::vector<ConnectorPtr> get_connectors(int fd, const drmModeRes& res) {
     std::vector<ConnectorPtr> connectors;
     for (int i = 0; i < res.count_connectors; ++i)
@@ -139,10 +118,6 @@ std::optional<std::string> check_card(const std::string& path, std::string& conn
         return fmt::format("{}: held by another process (is a desktop running?)", path);
     drmDropMaster(fd->get());
     return std::nullopt;
-}
-
-std::string mode_name(const drmModeModeInfo& m) {
-    return fmt::format("{}x{}@{}", m.hdisplay, m.vdisplay, m.vrefresh);
 }
 
 struct ModeSpec {
@@ -375,6 +350,8 @@ public:
         // The last flip may still be on its way to the screen.
         if (auto waited = flip_pending_ ? wait_for_flip() : Result<void>{}; !waited)
             spdlog::warn("{}", waited.error().message);
+        if (!powered_)  // the console needs the output on
+            if (auto on = set_dpms(DRM_MODE_DPMS_ON); !on) spdlog::warn("{}", on.error().message);
         saved_crtc_ = SavedCrtc{};  // console back before our framebuffers go away
         front_.reset();
         // Members go in reverse order: EGL, then the gbm surface (removing its framebuffers), the gbm
@@ -386,6 +363,7 @@ public:
     gpu::FrameTarget frame_target() const override { return {nullptr, size()}; }
     bool poll_events() override { return true; }  // no window system; signals are handled by the app
     Result<void> present() override;
+    Result<void> set_power(bool on) override;
     std::string describe() const override {
         return fmt::format("kms: {} {} {}Hz", card_, connector_name_, mode_name(mode_));
     }
@@ -393,6 +371,7 @@ public:
 private:
     KmsDisplay() = default;
     Result<void> wait_for_flip();
+    Result<void> set_dpms(uint64_t state);
 
     std::string card_;
     std::string connector_name_;
@@ -401,6 +380,7 @@ private:
     drmModeModeInfo mode_{};
     bool flip_pending_ = false;  // written by the page-flip event handler
     long frames_shown_ = 0;
+    bool modeset_needed_ = true;  // the first frame, and the first after the output was off
 
     UniqueFd fd_;
     GbmDevicePtr gbm_;
@@ -484,7 +464,39 @@ Result<void> KmsDisplay::wait_for_flip() {
     return {};
 }
 
+// The connector's standard "DPMS" property (kernel documentation, "KMS Properties"): legacy, but every
+// driver has it, and on atomic drivers it is the helpers' switch of the CRTC's ACTIVE state.
+Result<void> KmsDisplay::set_dpms(uint64_t state) {
+    const PropertiesPtr props{
+        drmModeObjectGetProperties(fd_.get(), connector_id_, DRM_MODE_OBJECT_CONNECTOR)};
+    if (!props)
+        return make_error(ExitCode::Display, "kms: {}: {}: drmModeObjectGetProperties: {}", card_,
+                          connector_name_, errno_text(errno));
+    for (uint32_t i = 0; i < props->count_props; ++i) {
+        const PropertyPtr prop{drmModeGetProperty(fd_.get(), props->props[i])};
+        if (!prop || std::string_view(prop->name) != "DPMS") continue;
+        const int rc = drmModeConnectorSetProperty(fd_.get(), connector_id_, prop->prop_id, state);
+        if (rc != 0)
+            return make_error(ExitCode::Display, "kms: {}: {}: DPMS {}: {}", card_, connector_name_,
+                              state == DRM_MODE_DPMS_ON ? "on" : "off", errno_text(-rc));
+        return {};
+    }
+    return make_error(ExitCode::Display, "kms: {}: {} has no DPMS property", card_, connector_name_);
+}
+
+Result<void> KmsDisplay::set_power(bool on) {
+    if (on == powered_) return {};
+    if (!on && flip_pending_)  // the flip in flight lands before the output goes
+        if (auto waited = wait_for_flip(); !waited) return waited;
+    if (auto r = set_dpms(on ? DRM_MODE_DPMS_ON : DRM_MODE_DPMS_OFF); !r) return r;
+    powered_ = on;
+    if (on) modeset_needed_ = true;  // the same mode again, with the next frame's buffer
+    spdlog::info("kms: {} {} output {}", card_, connector_name_, on ? "on (DPMS on)" : "off (DPMS off)");
+    return {};
+}
+
 Result<void> KmsDisplay::present() {
+    if (!powered_) return {};  // nothing is scanned out; the frame is dropped
     if (!egl_.swap_buffers())
         return make_error(ExitCode::Display, "kms: {}: eglSwapBuffers: {}", card_,
                           egl_error_name(eglGetError()));
@@ -493,12 +505,13 @@ Result<void> KmsDisplay::present() {
     auto fb = framebuffer_for(fd_.get(), card_, next.get());
     if (!fb) return fb.error();
 
-    if (!front_) {
+    if (modeset_needed_) {
         // First frame: a full modeset. Later frames only flip, which waits for vblank and never tears.
         const int rc = drmModeSetCrtc(fd_.get(), crtc_id_, *fb, 0, 0, &connector_id_, 1, &mode_);
         if (rc != 0)
             return make_error(ExitCode::Display, "kms: {}: drmModeSetCrtc {} {}: {}", card_, connector_name_,
                               mode_name(mode_), errno_text(-rc));
+        modeset_needed_ = false;
     } else {
         if (flip_pending_)  // a flip that timed out last frame
             if (auto waited = wait_for_flip(); !waited) return waited;
@@ -521,7 +534,7 @@ Result<void> KmsDisplay::present() {
 
 KmsProbe probe_kms(const std::string& preferred_card) {
     const std::vector<std::string> cards =
-        preferred_card.empty() ? list_cards() : std::vector{preferred_card};
+        preferred_card.empty() ? drm_card_paths() : std::vector{preferred_card};
     if (cards.empty()) return {"", "no /dev/dri/card* devices"};
     std::vector<std::string> reasons;
     for (const std::string& card : cards) {

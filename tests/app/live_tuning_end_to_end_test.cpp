@@ -4,6 +4,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -163,6 +164,30 @@ TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne)
     std::ofstream(config) << "[rain]\ndrop_count = 12\n[wave]\nresolution = 128\n";
     ASSERT_TRUE(puddle.wait_for("wave: 128x128 field")) << puddle.log();
     EXPECT_EQ(puddle.count("error"), 1) << "only the bad file's line:\n" << puddle.log();
+    EXPECT_EQ(puddle.stop(), 0) << puddle.log();
+}
+
+// /etc/puddle/puddle.toml -> /opt/signage/puddle.toml: edits of the target and a re-pointed link reload.
+TEST(LiveTuningEndToEnd, ASymlinkedConfigReloadsWhenItsTargetIsEditedOrTheLinkRepointed) {
+    TempDir dir;
+    std::filesystem::create_directories(dir / "etc");
+    std::filesystem::create_directories(dir / "opt");
+    dir.write("opt/day.toml", "[rain]\ndrop_count = 10\n");
+    dir.write("opt/night.toml", "[rain]\ndrop_count = 30\n");
+    const auto link = dir / "etc/puddle.toml";
+    std::filesystem::create_symlink("../opt/day.toml", link);
+    Running puddle({"-b", "headless", "--size", "64x36", "--frames", "0", "--config", link.string()},
+                   dir / "log.txt");
+    ASSERT_TRUE(puddle.ok());
+    ASSERT_TRUE(puddle.wait_for("headless: EGL")) << puddle.log();
+
+    std::ofstream(dir / "opt/day.toml") << "[rain]\ndrop_count = 20\n";
+    ASSERT_TRUE(puddle.wait_for("config: reloaded: rain.drop_count 10 -> 20 (config)")) << puddle.log();
+    const std::string repoint = "ln -sfn '" + (dir / "opt/night.toml").string() + "' '" + link.string() + "'";
+    ASSERT_EQ(std::system(repoint.c_str()), 0);
+    ASSERT_TRUE(puddle.wait_for("config: reloaded: rain.drop_count 20 -> 30 (config)")) << puddle.log();
+    std::ofstream(dir / "opt/night.toml") << "[rain]\ndrop_count = 31\n";
+    ASSERT_TRUE(puddle.wait_for("rain.drop_count 30 -> 31")) << puddle.log();
     EXPECT_EQ(puddle.stop(), 0) << puddle.log();
 }
 

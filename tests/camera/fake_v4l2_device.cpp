@@ -107,12 +107,13 @@ int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
             fourcc_ = f->fourcc;
             width_ = nearest.first;
             height_ = nearest.second;
+            const int pairs = (width_ + 1) / 2, chroma_rows = (height_ + 1) / 2;
             if (fourcc_ == V4L2_PIX_FMT_YUYV) {
-                stride_ = width_ * 2 + row_padding;
+                stride_ = pairs * 4 + row_padding;
                 size_image_ = stride_ * height_;
             } else if (fourcc_ == V4L2_PIX_FMT_NV12) {
-                stride_ = width_ + row_padding;
-                size_image_ = stride_ * height_ * 3 / 2;
+                stride_ = pairs * 2 + row_padding;  // the chroma row of an odd width is one byte longer
+                size_image_ = stride_ * (height_ + chroma_rows);
             } else {
                 stride_ = 0;
                 size_image_ = width_ * height_ * 2;  // room for any JPEG of this size
@@ -164,12 +165,13 @@ int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
             if (b->index >= buffers_.size()) return fail(EINVAL);
             Buffer& buf = buffers_[b->index];
             if (buf.queued || buf.done) return fail(EINVAL);  // queued twice: a bug in the caller
+            if (qbuf_failure_.take()) return fail(qbuf_failure_.value);
             buf.queued = true;
             return 0;
         }
         case VIDIOC_DQBUF: {
             if (!streaming_) return fail(EINVAL);
-            if (dqbuf_errno) return fail(dqbuf_errno);
+            if (dqbuf_failure_.take()) return fail(dqbuf_failure_.value);
             deliver();
             if (done_order_.empty()) return fail(EAGAIN);
             const int i = done_order_.front();
@@ -222,6 +224,8 @@ int FakeV4l2Device::poll(pollfd* fds, nfds_t count, int) {
             fds[i].revents = POLLNVAL;
         } else if (!present_) {
             fds[i].revents = POLLERR;
+        } else if (poll_event_.take()) {
+            fds[i].revents = static_cast<short>(poll_event_.value);
         } else if (streaming_) {
             deliver();
             if (!done_order_.empty()) fds[i].revents = POLLIN;
@@ -243,6 +247,14 @@ std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::u
             p[2] = b;
         }
     return camera::encode_jpeg(rgb, width, height, quality);
+}
+
+std::vector<std::byte> cut_in_scan(const std::vector<std::byte>& jpeg) {
+    std::size_t scan = 0;  // just after the last start-of-scan marker, FF DA
+    for (std::size_t i = 0; i + 1 < jpeg.size(); ++i)
+        if (jpeg[i] == std::byte{0xFF} && jpeg[i + 1] == std::byte{0xDA}) scan = i + 2;
+    const std::size_t cut = scan + (jpeg.size() - scan) / 2;
+    return std::vector<std::byte>(jpeg.begin(), jpeg.begin() + static_cast<std::ptrdiff_t>(cut));
 }
 
 }  // namespace puddle::test

@@ -2,9 +2,11 @@
 // A fake V4L2 capture device behind the I/O seam: a queue state machine with the habits of real
 // drivers. It snaps the requested size to the nearest it offers and pads bytesperline, grants fewer
 // buffers than asked, answers EAGAIN when nothing is ready, delivers error-flagged buffers and MJPEG
-// frames of varying length when told to, interrupts calls with EINTR, and can vanish mid-stream
-// (ENODEV, POLLERR) and come back. It counts descriptors and mappings, so tests can prove that
-// nothing leaks.
+// frames of varying length when told to, interrupts calls with EINTR, can vanish mid-stream
+// (ENODEV, POLLERR) and come back, and fails chosen calls with a chosen errno or poll event (EIO from
+// VIDIOC_DQBUF after a USB hiccup, ENXIO, POLLHUP) once, a few times or until told otherwise. It
+// counts descriptors and mappings, so tests can prove that nothing leaks. Sizes follow the kernel's
+// v4l2_fill_pixfmt(): subsampled chroma rounds odd sizes up.
 
 #include <cstddef>
 #include <cstdint>
@@ -37,13 +39,17 @@ public:
     int row_padding = 64;         // bytesperline = packed row + this
     bool exports_dmabuf = false;  // VIDIOC_EXPBUF support
     int eintr_every = 3;          // every Nth ioctl is interrupted once (0: never)
-    int dqbuf_errno =
-        0;  // nonzero: VIDIOC_DQBUF fails with it although poll said POLLIN (a race with unplug)
 
     // Driving it.
     void push_frame(FakeFrame frame) { pending_.push_back(std::move(frame)); }
     void unplug() { present_ = false; }
     void replug() { present_ = true; }
+    // The next `times` calls (-1: every call until set again) fail with `err`; VIDIOC_DQBUF fails although
+    // poll said POLLIN, and the frame stays ready. err 0 ends a failure.
+    void fail_dqbuf(int err, int times = 1) { dqbuf_failure_ = {err, times}; }
+    void fail_qbuf(int err, int times = 1) { qbuf_failure_ = {err, times}; }
+    // The next `times` polls report `revents` (POLLERR, POLLHUP) although the device is present.
+    void poll_reports(short revents, int times = 1) { poll_event_ = {revents, times}; }
 
     // Checking it.
     int open_fds() const { return static_cast<int>(fds_.size()); }
@@ -75,6 +81,15 @@ private:
         bool error = false;
         std::uint32_t sequence = 0;
     };
+    struct Injected {
+        int value = 0;
+        int times = 0;  // -1: until replaced
+        bool take() {   // whether this call gets the injected value
+            if (value == 0 || times == 0) return false;
+            if (times > 0) --times;
+            return true;
+        }
+    };
     int fail(int err);
     void deliver();  // moves pending frames into queued buffers
     bool present_ = true;
@@ -91,10 +106,14 @@ private:
     std::deque<int> done_order_;
     bool streaming_ = false;
     std::uint32_t sequence_ = 0;
+    Injected dqbuf_failure_, qbuf_failure_, poll_event_;
 };
 
 // A JPEG of a solid colour (libjpeg), so MJPEG frames have known content; quality changes its length.
 std::vector<std::byte> encode_jpeg(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b,
                                    int quality = 90);
+// `jpeg` cut in the middle of its entropy-coded data (after the last SOS marker), as when a USB transfer
+// of the frame is lost: the headers are whole, libjpeg starts decoding and runs out of data.
+std::vector<std::byte> cut_in_scan(const std::vector<std::byte>& jpeg);
 
 }  // namespace puddle::test

@@ -1,4 +1,7 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "assets/image_io.hpp"
 #include "camera/camera_source.hpp"
@@ -32,6 +35,18 @@ TEST(MockSource, PlaysAFolderInALoopAtTheRequestedRate) {
     }
     EXPECT_EQ(seen, (std::vector<int>{10, 20, 10, 20, 10})) << "a new image every 0.1 s, in name order";
     EXPECT_EQ(unused.opens(), 0) << "mock: never touches a device";
+}
+
+// Issue 15: a mock folder is decoded into memory whole, so its size is bounded before it is read.
+TEST(MockSource, AFolderOfTooManyImagesIsRefusedBeforeDecodingAny) {
+    TempDir dir;
+    for (int i = 0; i < 257; ++i) std::ofstream(dir / fmt::format("{:03}.png", i)) << "not decoded";
+    FakeV4l2Device unused;
+    auto src = camera::open_camera_source(unused, {.device = "mock:" + dir.path().string()});
+    ASSERT_FALSE(src);
+    EXPECT_EQ(src.error().code, ExitCode::Asset);
+    EXPECT_EQ(src.error().message, "camera: mock:" + dir.path().string() +
+                                       ": the folder holds more than 256 images; the limit is 256");
 }
 
 TEST(MockSource, MissingPathIsAnAssetErrorNamingIt) {

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>
 
+#include <cstring>
+
 #include "camera/camera_source.hpp"
 #include "camera/fake_v4l2_device.hpp"
 
@@ -172,7 +174,7 @@ TEST(V4l2Capture, EnodevFromDqbufIsAnError) {
     auto c = V4l2Capture::open(dev, {.width = 320, .height = 180});
     ASSERT_TRUE(c);
     dev.push_frame({yuyv_frame(dev, 40)});
-    dev.dqbuf_errno = ENODEV;  // poll says a frame is ready; the device is gone by the time it is dequeued
+    dev.fail_dqbuf(ENODEV, -1);  // poll says a frame is ready; the device is gone by the time it is dequeued
     auto r = c->poll();
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().message, "camera: /dev/video0: VIDIOC_DQBUF: No such device");
@@ -230,6 +232,148 @@ TEST(V4l2Source, DecodesMjpegFramesOfVaryingLength) {
     dev.push_frame({a});
     auto good = (*src)->poll(0.0);
     ASSERT_TRUE(good && good->has_value());
+}
+
+TEST(V4l2Capture, OddSizedNv12FramesMustHoldTheRoundedUpChroma) {
+    FakeV4l2Device dev;
+    dev.formats = {{V4L2_PIX_FMT_NV12, {{65, 49}}}};
+    dev.row_padding = 14;  // bytesperline 80
+    dev.max_buffers = 3;
+    auto c = V4l2Capture::open(dev, {.width = 65, .height = 49});
+    ASSERT_TRUE(c) << c.error().message;
+    ASSERT_EQ(c->format().stride, 80);
+    // stride * height * 3 / 2 misses the last chroma row of an odd height: 25 rows, not 24.5.
+    dev.push_frame({std::vector<std::byte>(80 * 49 * 3 / 2, std::byte{128})});
+    auto f = c->poll();
+    ASSERT_TRUE(f) << f.error().message;
+    EXPECT_FALSE(f->has_value()) << "a frame too short for its format is dropped";
+    EXPECT_EQ(c->dropped(), 1u);
+    EXPECT_EQ(c->last_drop_reason(), "5880 bytes; NV12 65x49 needs 5906");
+    dev.push_frame({std::vector<std::byte>(static_cast<std::size_t>(dev.size_image()), std::byte{128})});
+    auto g = c->poll();
+    ASSERT_TRUE(g && g->has_value());
+    EXPECT_EQ((*g)->bytes.size(), 80u * (49 + 25));
+}
+
+TEST(V4l2Capture, ABytesperlineTooShortForTheChromaIsRefusedAtOpen) {
+    FakeV4l2Device dev;
+    dev.formats = {{V4L2_PIX_FMT_NV12, {{65, 48}}}};
+    dev.row_padding = -1;  // bytesperline 65: an odd-width chroma row needs 66
+    auto c = V4l2Capture::open(dev, {.width = 65, .height = 48});
+    ASSERT_FALSE(c);
+    EXPECT_EQ(
+        c.error().message,
+        "camera: /dev/video0: VIDIOC_S_FMT gave NV12 65x48: bytesperline 65 is shorter than the 66 bytes "
+        "of a chroma row");
+    EXPECT_EQ(dev.open_fds(), 0);
+}
+
+TEST(V4l2Capture, OnlyAVanishedDeviceEndsTheStreamAtOnce) {
+    // Errors a device survives (a USB hiccup, a full queue, memory pressure): counted, retried.
+    for (int err : {EIO, EPIPE, ENOMEM}) {
+        FakeV4l2Device dev = yuyv_device();
+        auto c = V4l2Capture::open(dev, {.width = 320, .height = 180});
+        ASSERT_TRUE(c);
+        dev.push_frame({yuyv_frame(dev, 40)});
+        dev.fail_dqbuf(err);
+        auto f = c->poll();
+        ASSERT_TRUE(f) << f.error().message;
+        EXPECT_FALSE(f->has_value());
+        EXPECT_EQ(c->errors(), 1u);
+        EXPECT_EQ(c->last_error(), std::string("VIDIOC_DQBUF: ") + std::strerror(err));
+        auto g = c->poll();
+        ASSERT_TRUE(g && g->has_value()) << "the frame is dequeued on the next poll";
+        EXPECT_EQ(std::to_integer<int>((*g)->bytes[0]), 40);
+    }
+    // A device that is gone: an error at once, for the caller to close and reopen.
+    for (int err : {ENODEV, ENXIO}) {
+        FakeV4l2Device dev = yuyv_device();
+        auto c = V4l2Capture::open(dev, {.width = 320, .height = 180});
+        ASSERT_TRUE(c);
+        dev.push_frame({yuyv_frame(dev, 40)});
+        dev.fail_dqbuf(err);
+        auto f = c->poll();
+        ASSERT_FALSE(f);
+        EXPECT_EQ(f.error().message, std::string("camera: /dev/video0: VIDIOC_DQBUF: ") + std::strerror(err));
+    }
+    FakeV4l2Device dev = yuyv_device();
+    auto c = V4l2Capture::open(dev, {.width = 320, .height = 180});
+    ASSERT_TRUE(c);
+    dev.poll_reports(POLLHUP);
+    auto f = c->poll();
+    ASSERT_FALSE(f);
+    EXPECT_EQ(f.error().message, "camera: /dev/video0: the device went away (poll: POLLHUP)");
+}
+
+TEST(V4l2Capture, ARunOfErrorsIsAnErrorAndAFrameBetweenResetsIt) {
+    FakeV4l2Device dev = yuyv_device();
+    auto c = V4l2Capture::open(dev, {.width = 320, .height = 180});
+    ASSERT_TRUE(c);
+    dev.push_frame({yuyv_frame(dev, 40)});
+    dev.fail_dqbuf(EIO, camera::reopen_after_errors - 1);
+    for (int i = 0; i < camera::reopen_after_errors - 1; ++i) {
+        auto f = c->poll();
+        ASSERT_TRUE(f) << "failure " << i + 1 << ": " << f.error().message;
+        EXPECT_FALSE(f->has_value());
+    }
+    auto f = c->poll();
+    ASSERT_TRUE(f && f->has_value()) << "a frame after the errors";
+    dev.fail_dqbuf(EIO, -1);
+    for (int i = 0; i < camera::reopen_after_errors - 1; ++i) {
+        dev.push_frame({yuyv_frame(dev, 50)});
+        ASSERT_TRUE(c->poll()) << "the count started again after the frame; failure " << i + 1;
+    }
+    dev.push_frame({yuyv_frame(dev, 50)});
+    auto g = c->poll();
+    ASSERT_FALSE(g);
+    EXPECT_EQ(g.error().message,
+              "camera: /dev/video0: VIDIOC_DQBUF: Input/output error (10 failed calls in a row)");
+    EXPECT_EQ(c->errors(), 2u * camera::reopen_after_errors - 1);
+}
+
+TEST(V4l2Capture, ABufferWhoseQbufFailsIsGivenBackLater) {
+    FakeV4l2Device dev = yuyv_device();
+    dev.max_buffers = 2;
+    auto c = V4l2Capture::open(dev, {.width = 320, .height = 180});
+    ASSERT_TRUE(c);
+    dev.push_frame({yuyv_frame(dev, 40)});
+    ASSERT_TRUE(c->poll());
+    EXPECT_EQ(dev.queued_buffers(), 1) << "one held for the frame";
+    dev.fail_qbuf(EIO);
+    auto f = c->poll();
+    ASSERT_TRUE(f) << f.error().message;
+    EXPECT_EQ(c->errors(), 1u);
+    EXPECT_EQ(c->last_error(), "VIDIOC_QBUF: Input/output error");
+    EXPECT_EQ(dev.queued_buffers(), 1) << "the buffer stayed with the capture";
+    ASSERT_TRUE(c->poll());
+    EXPECT_EQ(dev.queued_buffers(), 2) << "and went back on the next poll: the driver is not left short";
+}
+
+TEST(V4l2Source, CorruptMjpegFramesAreDroppedAndCounted) {
+    FakeV4l2Device dev;
+    dev.formats = {{V4L2_PIX_FMT_MJPEG, {{64, 48}}}};
+    dev.max_buffers = 3;
+    auto src = camera::open_v4l2_source(dev, {.width = 64, .height = 48});
+    ASSERT_TRUE(src) << src.error().message;
+    const auto whole = encode_jpeg(64, 48, 200, 40, 30);
+    dev.push_frame({whole});
+    auto a = (*src)->poll(0.0);
+    ASSERT_TRUE(a && a->has_value());
+    dev.push_frame({cut_in_scan(whole)});
+    auto b = (*src)->poll(0.1);
+    ASSERT_TRUE(b) << "a corrupt frame does not end the stream";
+    EXPECT_FALSE(b->has_value()) << "a truncated frame is not shown";
+    EXPECT_EQ((*src)->counters().dropped, 1u);
+    dev.push_frame({encode_jpeg(32, 24, 200, 40, 30)});
+    auto c = (*src)->poll(0.2);
+    ASSERT_TRUE(c);
+    EXPECT_FALSE(c->has_value()) << "a JPEG of another size than negotiated is not shown";
+    EXPECT_EQ((*src)->counters().dropped, 2u);
+    dev.push_frame({whole});
+    auto d = (*src)->poll(0.3);
+    ASSERT_TRUE(d && d->has_value());
+    EXPECT_EQ((*src)->counters().dropped, 2u);
+    EXPECT_EQ((*src)->counters().errors, 0u);
 }
 
 }  // namespace

@@ -210,6 +210,21 @@ TEST(GpioMock, ScriptDrivesLinesAndWaits) {
     EXPECT_EQ(*n, 3u);
 }
 
+// Issue 15: a mock script is a file Puddle reads: an offset too large for an int (std::stoi threw and
+// ended the process) is no command, and a line too long to be one is skipped, not kept in memory.
+TEST(GpioMock, AHugeOffsetOrAnEndlessLineIsSkippedAndTheScriptGoesOn) {
+    test::TempDir dir;
+    const std::string script = dir.write("gpio.txt", "gpiochip0 99999999999 1\nbusy gpiochip0 99999999999\n" +
+                                                         std::string(200000, 'x') + "\ngpiochip0 5 1\n");
+    MockGpio gpio(script);
+    auto line = gpio.request({"gpiochip0", "5"});
+    ASSERT_TRUE(line);
+    for (int i = 0; i < 8; ++i) gpio.poll(10.0 + i);  // 64 KiB a poll: four polls reach the last line
+    EXPECT_TRUE((*line)->level().value()) << "the command after the long line ran";
+    EXPECT_FALSE(gpio.command("gpiochip0 99999999999 1", 20.0));
+    EXPECT_FALSE(gpio.command("deny gpiochip0 99999999999", 20.0));
+}
+
 }  // namespace
 }  // namespace puddle::io
 

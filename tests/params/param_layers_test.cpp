@@ -1,8 +1,10 @@
 // Precedence of the layers, clamping of knob values, presets.
+#include "params/param_layers.hpp"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "params/param_docs.hpp"
-#include "params/param_layers.hpp"
 
 namespace puddle::params {
 namespace {
@@ -181,6 +183,46 @@ TEST(ConfigKnobs, MistakesNameFileLineAndWhatIsExpected) {
         EXPECT_NE(r.error().message.find("k.toml:"), std::string::npos) << r.error().message;
         EXPECT_NE(r.error().message.find(c.expect), std::string::npos) << r.error().message;
     }
+}
+
+// Issue 15, fault 3: a knob's numbers are checked as written, before anything narrows them.
+TEST(ConfigKnobs, NumbersAreCheckedBeforeTheyAreStored) {
+    const std::string encoder = "[[knob]]\nkind = \"encoder\"\na = 1\nb = 2\n";
+    const std::string button = "[[knob]]\nkind = \"button\"\naction = \"save\"\n";
+    struct Case {
+        std::string text;
+        const char* message;
+    };
+    const Case cases[] = {
+        {button + "line = 3\ndebounce_ms = 20.5\n",  // was 20
+         "config: k.toml:5: knob 1: debounce_ms = 20.5 is not allowed: a whole number from 0 to 1000"},
+        {button + "line = 3\ndebounce_ms = 4294967316\n",
+         "config: k.toml:5: knob 1: debounce_ms = 4294967316 is not allowed: a whole number from 0 to 1000"},
+        {encoder + "param = \"rain.drop_count\"\nstep = 0.5\n",  // was 1
+         "config: k.toml:6: knob 1: step = 0.5 is not a whole number, and rain.drop_count is an integer"},
+        {encoder + "param = \"rain.intensity\"\nstep = 40\n",
+         "config: k.toml:6: knob 1: step = 40 is larger than the whole range of rain.intensity (0 to 4)"},
+        {button + "line = \"99999999999\"\n",  // std::stoi threw when the line was requested
+         "config: k.toml:4: knob 1: line must be a line offset (0 to 4095) or a line name (at most 64 "
+         "bytes)"},
+    };
+    for (const Case& c : cases) {
+        auto r = parse_config(c.text, "k.toml");
+        ASSERT_FALSE(r) << c.text;
+        EXPECT_EQ(r.error().message, c.message);
+    }
+    auto named = parse_config(button + "line = \"17\"\n", "k.toml");
+    ASSERT_TRUE(named) << named.error().message;
+    EXPECT_EQ(named->knobs[0].line, "17");
+}
+
+TEST(ConfigKnobs, AtMostSixtyFourKnobs) {
+    std::string text;
+    for (int i = 0; i < 65; ++i)
+        text += fmt::format("[[knob]]\nkind = \"button\"\naction = \"save\"\nline = {}\n", i);
+    auto r = parse_config(text, "k.toml");
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().message, "config: k.toml:1: 65 [[knob]] tables; the limit is 64");
 }
 
 }  // namespace

@@ -6,7 +6,12 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/common.hpp>
+#include <iterator>
 
+#include "camera/yuv_matrix.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace puddle::test {
@@ -200,6 +205,104 @@ TEST_F(CameraEnvironmentTest, BlendMixesTheCameraWithTheCubemap) {
         EXPECT_GT(half[0], sky_only[0] + 40);
         EXPECT_LT(half[0], camera_only[0] - 20);
     }
+}
+
+// What the conversion shader should give for one sample, worked out on the CPU: the driver's matrix and
+// range (yuv_matrix), clamped, in sRGB codes as the colour texture stores them.
+Rgb reference(int y, int u, int v, YuvMatrix matrix, bool full_range) {
+    const camera::YuvToRgb m = camera::yuv_to_rgb(matrix, full_range);
+    const glm::vec3 c = glm::clamp(m.matrix * (glm::vec3(y, u, v) / 255.0f - m.offset), 0.0f, 1.0f);
+    return {int(std::lround(c.r * 255)), int(std::lround(c.g * 255)), int(std::lround(c.b * 255))};
+}
+
+std::vector<std::byte> read_case(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<char> chars{std::istreambuf_iterator<char>(in), {}};
+    return std::vector<std::byte>(reinterpret_cast<const std::byte*>(chars.data()),
+                                  reinterpret_cast<const std::byte*>(chars.data()) + chars.size());
+}
+
+TEST_F(CameraEnvironmentTest, OddWidthNv12MatchesTheEvenReference) {
+    const std::filesystem::path cases = std::filesystem::path(PUDDLE_SHARED_DIR) / "cases" / "camera";
+    if (!std::filesystem::exists(cases / "nv12_65x48_stride80.raw"))
+        GTEST_SKIP() << "needs " << cases.string() << " (the shared cases folder beside the source tree)";
+    const auto odd_bytes = read_case(cases / "nv12_65x48_stride80.raw");
+    const auto even_bytes = read_case(cases / "nv12_64x48_stride64.raw");
+    ASSERT_EQ(odd_bytes.size(), 80u * (48 + 24));
+    ASSERT_EQ(even_bytes.size(), 64u * (48 + 24));
+    const auto even =
+        convert({.layout = PixelLayout::Nv12, .width = 64, .height = 48, .stride = 64, .data = even_bytes});
+    const auto odd =
+        convert({.layout = PixelLayout::Nv12, .width = 65, .height = 48, .stride = 80, .data = odd_bytes});
+    ASSERT_EQ(odd.size(), 65u * 48 * 4);
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x)
+            expect_near(texel(odd, 65, x, y), texel(even, 64, x, y), fmt::format("pixel {},{}", x, y));
+        // The 65th column takes the 33rd chroma pair (bytes 64 and 65 of its chroma row), not green.
+        const auto at = [&](std::size_t i) { return std::to_integer<int>(odd_bytes[i]); };
+        const std::size_t chroma = 80u * 48 + 80u * std::size_t(y / 2) + 64;
+        expect_near(
+            texel(odd, 65, 64, y),
+            reference(at(80u * std::size_t(y) + 64), at(chroma), at(chroma + 1), YuvMatrix::Bt601, false),
+            fmt::format("edge pixel 64,{}", y));
+    }
+}
+
+TEST_F(CameraEnvironmentTest, OddWidthsAndHeightsReachTheLastChromaSample) {
+    // NV12 5x3, bytesperline 8: chroma 3 pairs by 2 rows, each block its own colour; every pixel checked.
+    const int width = 5, height = 3, stride = 8;
+    std::vector<std::byte> nv12(std::size_t(stride) * (height + 2), std::byte{0x55});
+    const auto luma = [](int x, int y) { return 60 + 30 * x + 10 * y; };
+    const auto cb = [](int bx, int by) { return 40 + 70 * bx + 20 * by; };
+    const auto cr = [](int bx, int by) { return 220 - 60 * bx - 30 * by; };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) nv12[std::size_t(y) * stride + x] = std::byte(luma(x, y));
+    for (int by = 0; by < 2; ++by)
+        for (int bx = 0; bx < 3; ++bx) {
+            nv12[std::size_t(stride) * (height + by) + std::size_t(bx) * 2] = std::byte(cb(bx, by));
+            nv12[std::size_t(stride) * (height + by) + std::size_t(bx) * 2 + 1] = std::byte(cr(bx, by));
+        }
+    const auto out = convert(
+        {.layout = PixelLayout::Nv12, .width = width, .height = height, .stride = stride, .data = nv12});
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            expect_near(texel(out, width, x, y),
+                        reference(luma(x, y), cb(x / 2, y / 2), cr(x / 2, y / 2), YuvMatrix::Bt601, false),
+                        fmt::format("NV12 pixel {},{}", x, y));
+
+    // YUYV 5x2: the fifth pixel is Y0 of a third pair whose Y1 is padding.
+    const int yuyv_stride = 16;
+    std::vector<std::byte> yuyv(std::size_t(yuyv_stride) * 2, std::byte{0x55});
+    for (int y = 0; y < 2; ++y)
+        for (int pair = 0; pair < 3; ++pair) {
+            auto* p = &yuyv[std::size_t(y) * yuyv_stride + std::size_t(pair) * 4];
+            p[0] = std::byte(luma(2 * pair, y));
+            p[1] = std::byte(cb(pair, y));
+            p[2] = std::byte(luma(2 * pair + 1, y));
+            p[3] = std::byte(cr(pair, y));
+        }
+    const auto packed = convert(
+        {.layout = PixelLayout::Yuyv, .width = width, .height = 2, .stride = yuyv_stride, .data = yuyv});
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < width; ++x)
+            expect_near(texel(packed, width, x, y),
+                        reference(luma(x, y), cb(x / 2, y), cr(x / 2, y), YuvMatrix::Bt601, false),
+                        fmt::format("YUYV pixel {},{}", x, y));
+}
+
+TEST_F(CameraEnvironmentTest, AFrameTooShortForItsFormatIsNotUploaded) {
+    const std::vector<std::byte> grey(8 * 4 + 8 * 2, std::byte{128});
+    (void)convert({.layout = PixelLayout::Nv12, .width = 8, .height = 4, .stride = 8, .data = grey});
+    // The same size with one chroma row missing: refused, and the colour texture keeps its picture.
+    const auto before = engine->device().read_texture(env.colour);
+    std::vector<std::byte> dark(8 * 4 + 8 * 2 - 1, std::byte{16});
+    auto r = systems::upload_camera_frame(
+        engine->device(), {.layout = PixelLayout::Nv12, .width = 8, .height = 4, .stride = 8, .data = dark},
+        env);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().message, "camera: frame not uploaded: NV12 8x4 in 47 bytes, needs 48");
+    systems::camera_environment_system(engine->device(), engine->params(), sky(), env);
+    EXPECT_EQ(engine->device().read_texture(env.colour), before);
 }
 
 }  // namespace

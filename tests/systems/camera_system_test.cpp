@@ -155,5 +155,72 @@ TEST(CameraFeed, NewestFrameWinsAndASlowCameraNeverStallsTheDisplay) {
     EXPECT_LT(centre_luma(), bright - 20);
 }
 
+TEST(CameraFeed, ATransientErrorKeepsStreamingAndOnlyARunReopens) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.dev.max_buffers = 3;
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=36"}),
+        {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
+
+    // One EIO from VIDIOC_DQBUF: counted, no reopen, the camera stays in the reflection.
+    rig.dev.fail_dqbuf(EIO);
+    for (int i = 0; i < 5; ++i) rig.frame();
+    EXPECT_EQ(rig.dev.opens(), 1);
+    EXPECT_EQ(rig.feed().losses, 0u);
+    EXPECT_TRUE(rig.feed().streaming());
+    EXPECT_NE(rig.env().reflection(), nullptr);
+    EXPECT_EQ(rig.feed().faults().errors, 1u);
+
+    // A run of them: the device is closed and reopened, as after an unplug.
+    rig.dev.fail_dqbuf(EIO, camera::reopen_after_errors);
+    for (int i = 0; i < camera::reopen_after_errors; ++i) rig.frame();
+    EXPECT_EQ(rig.feed().losses, 1u);
+    EXPECT_FALSE(rig.feed().streaming());
+    EXPECT_EQ(rig.feed().faults().errors, 1u + camera::reopen_after_errors)
+        << "the closed source's count is kept";
+    EXPECT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
+    EXPECT_EQ(rig.dev.opens(), 2);
+}
+
+TEST(CameraFeed, ACorruptMjpegFrameKeepsThePreviousReflection) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_MJPEG, {{64, 48}}}};
+    rig.dev.max_buffers = 3;
+    rig.engine = make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     "environment.camera_width=64", "environment.camera_height=48"}),
+        {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    auto frame = [&] { ASSERT_TRUE(rig.engine->frame(1.0 / 30.0)); };
+    for (int i = 0; i < 40 && !rig.feed().streaming(); ++i) frame();
+    ASSERT_TRUE(rig.feed().streaming());
+    rig.dev.push_frame({encode_jpeg(64, 48, 230, 200, 60)});
+    frame();
+    ASSERT_NE(rig.env().reflection(), nullptr);
+    const std::vector<float> shown = rig.engine->device().read_texture(rig.env().colour);
+
+    // A dark frame cut short in its pixel data: libjpeg would fill the rest with grey; it is dropped.
+    const auto dark = encode_jpeg(64, 48, 20, 30, 40);
+    rig.dev.push_frame({cut_in_scan(dark)});
+    frame();
+    EXPECT_EQ(rig.engine->device().read_texture(rig.env().colour), shown)
+        << "the reflection keeps the last whole frame";
+    EXPECT_NE(rig.env().reflection(), nullptr);
+    EXPECT_EQ(rig.feed().faults().dropped, 1u);
+    EXPECT_EQ(rig.feed().losses, 0u);
+    // The next whole frame shows.
+    rig.dev.push_frame({dark});
+    frame();
+    EXPECT_NE(rig.engine->device().read_texture(rig.env().colour), shown);
+}
+
 }  // namespace
 }  // namespace puddle::test

@@ -68,6 +68,23 @@ TEST(LiveTuning, AnInvalidFileKeepsTheLastGoodConfigAndTheNextValidSaveApplies) 
     EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 12);
 }
 
+// Issue 15, fault 2: a live edit to a 50 000-level dotted key killed the running display (SIGSEGV).
+TEST(LiveTuning, AConfigPastTheInputLimitsKeepsTheLastGoodConfig) {
+    Rig rig("[rain]\ndrop_count = 10\n");
+    rig.step(1.0);
+    std::string deep = "a";
+    for (int i = 0; i < 50000; ++i) deep += ".a";
+    rig.write_config("[rain]\ndrop_count = 30\n" + deep + " = 1\n");
+    rig.step(1.1);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    rig.write_config("[" + deep + "]\n");
+    rig.step(1.2);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    rig.write_config("[rain]\ndrop_count = 12\n");
+    rig.step(1.3);
+    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 12);
+}
+
 TEST(LiveTuning, DeletedConfigKeepsRunningAndARecreatedOneApplies) {
     Rig rig("[rain]\ndrop_count = 10\n");
     rig.step(1.0);

@@ -1,0 +1,40 @@
+// The DRM card list that the kms backend picks from and --check prints: the kernel's numbering order
+// (card10 after card2), render nodes and other names left out.
+#include "platform/drm_inventory.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/test_support.hpp"
+
+namespace puddle::platform {
+namespace {
+
+TEST(DrmInventory, CardsComeInTheKernelsNumberOrder) {
+    test::TempDir dir;
+    for (const char* name : {"card10", "card2", "renderD128", "card0", "cardx", "card1", "card", "by-path"})
+        std::ofstream(dir / name) << "";
+    const auto cards = drm_card_paths(dir.path().string());
+    const std::string d = dir.path().string() + "/";
+    EXPECT_EQ(cards, (std::vector<std::string>{d + "card0", d + "card1", d + "card2", d + "card10"}));
+}
+
+TEST(DrmInventory, AMissingFolderHasNoCards) {
+    EXPECT_TRUE(drm_card_paths("/nonexistent-puddle-dri").empty());
+}
+
+TEST(DrmInventory, NamesAConnectorAndAModeAsTheKernelAndTheConfigDo) {
+    drmModeConnector hdmi{};
+    hdmi.connector_type = DRM_MODE_CONNECTOR_HDMIA;
+    hdmi.connector_type_id = 1;
+    EXPECT_EQ(connector_name(hdmi), "HDMI-A-1");
+    drmModeModeInfo mode{};
+    mode.hdisplay = 1920;
+    mode.vdisplay = 1080;
+    mode.vrefresh = 60;
+    EXPECT_EQ(mode_name(mode), "1920x1080@60");
+}
+
+}  // namespace
+}  // namespace puddle::platform
