@@ -2,7 +2,6 @@
 
 #include <cerrno>
 #include <algorithm>
-#include <charconv>
 #include <cstring>
 #include <filesystem>
 
@@ -18,14 +17,6 @@ bool is_number(std::string_view text) {
     for (char c : text)
         if (c < '0' || c > '9') return false;
     return true;
-}
-
-std::optional<int> line_offset(std::string_view text) {
-    if (!is_number(text)) return std::nullopt;
-    int value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc{} || end != text.data() + text.size() || value > 65535) return std::nullopt;
-    return value;
 }
 
 std::vector<std::string> gpio_chip_paths() {

@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <memory>
-#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -73,8 +72,5 @@ Error gpio_request_error(const LineRequest& request, int err);
 // True when every character is a digit and there are at most 9 (a line offset or chip number rather than a
 // name; std::stoi on it cannot overflow).
 bool is_number(std::string_view text);
-// A line given as an offset ("17"): its value; nothing for a name ("GPIO17") or for digits past any
-// chip's lines (more than 65535), which must fail as "no such line" rather than overflow an int.
-std::optional<int> line_offset(std::string_view text);
 
 }  // namespace puddle::io

@@ -67,10 +67,8 @@ public:
         errno = 0;
         gpiod_chip* chip = gpiod_chip_open_lookup(r.chip.c_str());
         if (!chip) return gpio_request_error(r, errno ? errno : ENOENT);
-        gpiod_line* line = nullptr;
-        if (!is_number(r.line)) line = gpiod_chip_find_line(chip, r.line.c_str());
-        else if (const auto offset = line_offset(r.line)) line = gpiod_chip_get_line(chip, static_cast<unsigned>(*offset));
-        else errno = ENOENT;  // more digits than any chip has lines
+        gpiod_line* line = is_number(r.line) ? gpiod_chip_get_line(chip, static_cast<unsigned>(std::stoul(r.line)))
+                                             : gpiod_chip_find_line(chip, r.line.c_str());
         if (!line) {
             const int err = errno ? errno : ENOENT;
             gpiod_chip_close(chip);

@@ -95,8 +95,7 @@ public:
         errno = 0;
         ChipPtr chip = open_chip(r.chip);
         if (!chip) return gpio_request_error(r, errno ? errno : ENOENT);
-        const int offset = is_number(r.line) ? line_offset(r.line).value_or(-1)
-                                             : gpiod_chip_get_line_offset_from_name(chip.get(), r.line.c_str());
+        int offset = is_number(r.line) ? std::stoi(r.line) : gpiod_chip_get_line_offset_from_name(chip.get(), r.line.c_str());
         if (offset < 0) return gpio_request_error(r, ENOENT);
 
         SettingsPtr settings(gpiod_line_settings_new());

@@ -146,13 +146,14 @@ Result<std::unique_ptr<GpioLine>> MockGpio::request(const LineRequest& r) {
     for (auto& [key, c] : chips_)
         if (key == name || c->label == r.chip) chip = c;
     if (!chip) return gpio_request_error(r, ENOENT);
-    std::optional<int> offset = line_offset(r.line);
-    if (!offset && r.line.starts_with("GPIO")) offset = line_offset(std::string_view(r.line).substr(4));
-    if (!offset || *offset >= mock_line_count) return gpio_request_error(r, ENOENT);
-    if (const int err = chip->error[static_cast<std::size_t>(*offset)]) return gpio_request_error(r, err);
+    int offset = -1;
+    if (is_number(r.line)) offset = std::stoi(r.line);
+    else if (r.line.starts_with("GPIO") && is_number(r.line.substr(4))) offset = std::stoi(r.line.substr(4));
+    if (offset < 0 || offset >= mock_line_count) return gpio_request_error(r, ENOENT);
+    if (const int err = chip->error[static_cast<std::size_t>(offset)]) return gpio_request_error(r, err);
     for (const Chip::Listener* l : chip->listeners)
-        if (l->offset == *offset) return gpio_request_error(r, EBUSY);
-    std::unique_ptr<GpioLine> line = std::make_unique<MockLine>(chip, *offset, r);
+        if (l->offset == offset) return gpio_request_error(r, EBUSY);
+    std::unique_ptr<GpioLine> line = std::make_unique<MockLine>(chip, offset, r);
     return line;
 }
 
@@ -163,12 +164,8 @@ bool MockGpio::command(std::string_view text, double now) {
     if (a.empty() || a[0] == '#') return false;
     if (a == "remove" && !b.empty()) return remove_chip(b), true;
     if (a == "add" && !b.empty()) return add_chip(b, c), true;
-    if (a == "busy" || a == "deny") {
-        const auto offset = line_offset(c);
-        return offset && (set_error(b, *offset, a == "busy" ? EBUSY : EACCES), true);
-    }
-    if (const auto offset = line_offset(b); offset && (c == "0" || c == "1"))
-        return set_level(a, *offset, c == "1", now), true;
+    if ((a == "busy" || a == "deny") && is_number(c)) return set_error(b, std::stoi(c), a == "busy" ? EBUSY : EACCES), true;
+    if (is_number(b) && (c == "0" || c == "1")) return set_level(a, std::stoi(b), c == "1", now), true;
     return false;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "camera/camera_source.hpp"
+#include "camera/frame_layout.hpp"
 #include "camera/fake_v4l2_device.hpp"
 #include "fuzz_support.hpp"
 
@@ -60,9 +61,6 @@ std::size_t packed_row(const CameraImage& f) {
     return 0;
 }
 
-const char* layout_name(PixelLayout l) {
-    return l == PixelLayout::Rgba ? "RGBA" : l == PixelLayout::Yuyv ? "YUYV" : "NV12";
-}
 
 }  // namespace
 
