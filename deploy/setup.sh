@@ -15,6 +15,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev            # tests and puddle-bench
     xvfb xauth                                            # the window backend's test runs under Xvfb
     dpkg-dev systemd                                      # the .deb (cpack, dpkg-shlibdeps); unit checks
+    clang libclang-rt-14-dev                              # tests/fuzz/run: libFuzzer and the sanitizers
 )
 # The VM test (tests/vm/run) boots an amd64 Debian kernel under QEMU and runs the host's binary in it.
 if [ "$(dpkg --print-architecture)" = amd64 ]; then

@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <new>
+#include <optional>
 #include <system_error>
 
+#include "assets/image_limits.hpp"
 #include "assets/image_module.hpp"
 
 namespace puddle::assets {
@@ -31,12 +33,25 @@ Result<void> check_readable(const std::string& path) {
     return {};
 }
 
-// The module's PuddleImageAlloc: sizes the Image once the module knows the file's size and type.
+// What the module's allocation callback works on: the image to size, and why it refused to.
+struct Allocation {
+    const std::string& path;
+    Image image;
+    std::optional<Error> refused;  // the size is past image_limits.hpp's limits
+};
+
+// The module's PuddleImageAlloc: called once the module has read the file's header, before any pixel is
+// decoded. Checks the size against the limits, then sizes the Image.
 void* allocate(void* context, int width, int height, int is_float) noexcept {
+    auto* a = static_cast<Allocation*>(context);
     try {
-        auto* image = static_cast<Image*>(context);
-        *image = Image::make(width, height, is_float ? PixelFormat::RGBA32F : PixelFormat::RGBA8);
-        return image->data.data();
+        const PixelFormat format = is_float ? PixelFormat::RGBA32F : PixelFormat::RGBA8;
+        if (auto fits = check_image_size(a->path, width, height, format); !fits) {
+            a->refused = fits.error();
+            return nullptr;
+        }
+        a->image = Image::make(width, height, format);
+        return a->image.data.data();
     } catch (const std::bad_alloc&) {
         return nullptr;
     }
@@ -47,11 +62,13 @@ Result<Image> read_through_module(const std::string& path, PuddleImageWant want)
     auto module = image_module();
     if (!module)
         return make_error(ExitCode::Asset, "image: {}: cannot read: {}", path, module.error().message);
-    Image image;
+    Allocation allocation{.path = path};
     char why[512] = "";
-    if ((*module)->read(path.c_str(), want, allocate, &image, why, sizeof why) == 0)
+    if ((*module)->read(path.c_str(), want, allocate, &allocation, why, sizeof why) == 0) {
+        if (allocation.refused) return *allocation.refused;
         return make_error(ExitCode::Asset, "image: {}: {}", path, why);
-    return image;
+    }
+    return std::move(allocation.image);
 }
 
 }  // namespace

@@ -168,7 +168,7 @@ Result<void> validate(const ParamDecl& d, const ParamValue& v) {
         }
         case ParamKind::Float: {
             if (!std::holds_alternative<float>(v)) return wrong_kind();
-            if (!float_in_range(d, std::get<float>(v))) return range_error(d, v);
+            if (!float_in_range(d, static_cast<double>(std::get<float>(v)))) return range_error(d, v);
             return {};
         }
         case ParamKind::Vec3:
@@ -176,7 +176,7 @@ Result<void> validate(const ParamDecl& d, const ParamValue& v) {
             if (!std::holds_alternative<glm::vec3>(v)) return wrong_kind();
             const glm::vec3 c = std::get<glm::vec3>(v);
             for (int i = 0; i < 3; ++i)
-                if (!float_in_range(d, c[i])) return range_error(d, v);
+                if (!float_in_range(d, static_cast<double>(c[i]))) return range_error(d, v);
             return {};
         }
         case ParamKind::Enum: {

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include "assets/image_limits.hpp"
+
 namespace puddle::assets {
 namespace {
 
@@ -119,6 +121,41 @@ TEST_F(ImageIoTest, HdrKeepsLinearValuesAsFloat) {
     const float* last = img->pixelf(1023, 511);  // rows top first: the last row is the bottom one
     EXPECT_NEAR(last[0], 0.173828f, 1e-3f);
     EXPECT_NEAR(last[1], 0.092773f, 1e-3f);
+}
+
+// A Radiance header claiming a size, with no pixels after it: what a few bytes of a wrong file can say.
+std::string hdr_header(int width, int height) {
+    return "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " +
+           std::to_string(width) + "\n";
+}
+
+TEST_F(ImageIoTest, WiderThanTheSideLimitIsRefusedFromTheHeader) {
+    write_bytes("wide.hdr", hdr_header(max_image_side + 1, 2));
+    auto img = read_color_image(path("wide.hdr"));
+    ASSERT_FALSE(img.ok());
+    EXPECT_EQ(img.error().code, ExitCode::Asset);
+    EXPECT_EQ(img.error().message, "image: " + path("wide.hdr") + ": " + std::to_string(max_image_side + 1) +
+                                       "x2 is too large: at most " + std::to_string(max_image_side) +
+                                       " pixels a side");
+}
+
+TEST_F(ImageIoTest, MoreDecodedBytesThanTheLimitAreRefusedBeforeDecoding) {
+    // 12000x12000 float pixels would be 2197 MiB: refused from the header, nothing allocated.
+    write_bytes("huge.hdr", hdr_header(12000, 12000));
+    auto img = read_color_image(path("huge.hdr"));
+    ASSERT_FALSE(img.ok());
+    EXPECT_EQ(img.error().message,
+              "image: " + path("huge.hdr") +
+                  ": 12000x12000 RGBA32F needs 2197 MiB decoded, more than the 1024 MiB limit");
+}
+
+TEST(ImageLimits, TheLimitsThemselvesAreAllowed) {
+    EXPECT_TRUE(
+        check_image_size("a", max_image_side, max_image_side, PixelFormat::RGBA8).ok());  // exactly 1 GiB
+    EXPECT_TRUE(check_image_size("a", 8192, 8192, PixelFormat::RGBA32F).ok());            // exactly 1 GiB
+    EXPECT_FALSE(check_image_size("a", 8193, 8192, PixelFormat::RGBA32F).ok());
+    EXPECT_FALSE(check_image_size("a", 1, max_image_side + 1, PixelFormat::RGBA8).ok());
+    EXPECT_FALSE(check_image_size("a", 0, 1, PixelFormat::RGBA8).ok());
 }
 
 TEST_F(ImageIoTest, MissingFileNamesThePathAndTheReason) {
