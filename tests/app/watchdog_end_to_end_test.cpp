@@ -2,32 +2,25 @@
 // an edit of its config, at a panorama large enough that reading and converting it takes seconds. The
 // frames, and so the WATCHDOG=1 pings, must go on meanwhile (issue 15, fault 6: the old code held one
 // frame for the whole load, 12 to 17 s for an 8192x4096 sky, and systemd would have restarted it).
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
 #include <sys/socket.h>
 #include <sys/un.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "assets/image_io.hpp"
+#include "support/running_puddle.hpp"
 #include "support/test_support.hpp"
 #include "systems/environment_test_support.hpp"
-
-extern char** environ;
 
 namespace puddle::test {
 namespace {
@@ -90,65 +83,9 @@ private:
     std::thread listener_;
 };
 
-std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// The binary in the background with extra environment variables, its log in a file.
-class Background {
-public:
-    Background(const std::vector<std::string>& env, const std::vector<std::string>& args,
-               std::filesystem::path log)
-        : log_(std::move(log)) {
-        std::vector<std::string> all_args{PUDDLE_BINARY};
-        all_args.insert(all_args.end(), args.begin(), args.end());
-        std::vector<char*> argv, envp;
-        for (auto& a : all_args) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        std::vector<std::string> all_env(env);
-        for (char** e = environ; *e; ++e) all_env.emplace_back(*e);
-        for (auto& e : all_env) envp.push_back(e.data());
-        envp.push_back(nullptr);
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_adddup2(&actions, 1, 2);
-        if (posix_spawn(&pid_, PUDDLE_BINARY, &actions, nullptr, argv.data(), envp.data()) != 0) pid_ = -1;
-        posix_spawn_file_actions_destroy(&actions);
-    }
-    ~Background() { stop(); }
-    Background(const Background&) = delete;
-    Background& operator=(const Background&) = delete;
-
-    bool running() {
-        if (pid_ <= 0) return false;
-        int status = 0;
-        if (::waitpid(pid_, &status, WNOHANG) != pid_) return true;
-        pid_ = -1;
-        return false;
-    }
-    // SIGTERM, then its exit code (-1 when it did not exit normally).
-    int stop() {
-        if (pid_ <= 0) return -1;
-        ::kill(pid_, SIGTERM);
-        int status = 0;
-        ::waitpid(pid_, &status, 0);
-        pid_ = -1;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    std::string log() const { return read_file(log_); }
-
-private:
-    std::filesystem::path log_;
-    pid_t pid_ = -1;
-};
-
 // Polls `done` every 100 ms for up to `seconds` (llvmpipe on a busy CI machine is slow).
 template <class Done>
-bool wait_until(Background& puddle, double seconds, Done&& done) {
+bool wait_until(Running& puddle, double seconds, Done&& done) {
     const auto end =
         Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     while (Clock::now() < end) {
@@ -180,10 +117,9 @@ TEST(WatchdogEndToEnd, ALiveEditToALargeSkyKeepsThePingsWithinHalfTheWatchdogPer
     ASSERT_TRUE(systemd.ok());
     constexpr double watchdog_seconds = 4.0;
     const std::string screenshot = (dir / "after.png").string();
-    Background puddle({"NOTIFY_SOCKET=" + systemd.path(), "WATCHDOG_USEC=4000000"},
-                      {"-b", "headless", "--size", "160x90", "--frames", "0", "--config", config,
-                       "--screenshot", screenshot},
-                      dir / "log.txt");
+    Running puddle({"-b", "headless", "--size", "160x90", "--frames", "0", "--config", config, "--screenshot",
+                    screenshot},
+                   dir / "log.txt", {"NOTIFY_SOCKET=" + systemd.path(), "WATCHDOG_USEC=4000000"});
     ASSERT_TRUE(wait_until(puddle, 120, [&] { return systemd.count("READY=1") == 1; })) << puddle.log();
 
     // An editor's save: a new file renamed over the old one.

@@ -23,17 +23,24 @@ std::string read_file(const std::filesystem::path& p) {
 }
 }  // namespace
 
-Running::Running(const std::vector<std::string>& args, std::filesystem::path log) : log_(std::move(log)) {
+Running::Running(const std::vector<std::string>& args, std::filesystem::path log,
+                 const std::vector<std::string>& environment)
+    : log_(std::move(log)) {
     std::vector<std::string> all{PUDDLE_BINARY};
     all.insert(all.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : all) argv.push_back(a.data());
     argv.push_back(nullptr);
+    std::vector<std::string> env(environment);
+    for (char** e = environ; *e; ++e) env.emplace_back(*e);
+    std::vector<char*> envp;
+    for (auto& e : env) envp.push_back(e.data());
+    envp.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    ok_ = posix_spawn(&pid_, PUDDLE_BINARY, &actions, nullptr, argv.data(), environ) == 0;
+    ok_ = posix_spawn(&pid_, PUDDLE_BINARY, &actions, nullptr, argv.data(), envp.data()) == 0;
     posix_spawn_file_actions_destroy(&actions);
 }
 
@@ -62,6 +69,14 @@ int Running::count(const std::string& text) const {
 
 void Running::signal(int sig) const {
     ::kill(pid_, sig);
+}
+
+bool Running::running() {
+    if (pid_ <= 0) return false;
+    int status = 0;
+    if (::waitpid(pid_, &status, WNOHANG) != pid_) return true;
+    pid_ = -1;
+    return false;
 }
 
 int Running::stop() {

@@ -12,7 +12,9 @@ namespace puddle::test {
 
 class Running {
 public:
-    Running(const std::vector<std::string>& args, std::filesystem::path log);
+    // `environment`: NAME=value lines added to this process's environment (NOTIFY_SOCKET=..., say).
+    Running(const std::vector<std::string>& args, std::filesystem::path log,
+            const std::vector<std::string>& environment = {});
     ~Running();
     Running(const Running&) = delete;
     Running& operator=(const Running&) = delete;
@@ -23,6 +25,8 @@ public:
     // How many times the log holds `text`.
     int count(const std::string& text) const;
     void signal(int sig) const;
+    // False once the process has exited.
+    bool running();
     // SIGTERM, then its exit code (-1 when it did not exit normally, e.g. killed by a signal).
     int stop();
     std::string log() const;
