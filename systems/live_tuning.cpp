@@ -1,11 +1,10 @@
 #include "systems/live_tuning.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <time.h>
 
 #include <cmath>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 namespace puddle::systems {
 
@@ -38,8 +37,9 @@ std::string describe_changes(const params::Params& before, const params::Params&
     for (const auto& d : params::param_decls()) {
         if (before.at(d.id) == after.at(d.id)) continue;
         if (n++ < 6)
-            out += fmt::format("{}{} {} -> {} ({})", out.empty() ? "" : ", ", d.name, params::format_value(before.at(d.id)),
-                               params::format_value(after.at(d.id)), params::source_name(after.source(d.id)));
+            out += fmt::format("{}{} {} -> {} ({})", out.empty() ? "" : ", ", d.name,
+                               params::format_value(before.at(d.id)), params::format_value(after.at(d.id)),
+                               params::source_name(after.source(d.id)));
     }
     if (n > 6) out += fmt::format(" and {} more", n - 6);
     return n ? out : "no value changed";
@@ -53,25 +53,39 @@ void apply_action(LiveTuning& t, const io::KnobAction& a, const params::Params& 
             const auto& held = t.layers.knob(*k.param);
             const params::ParamValue& base = held ? *held : current.at(*k.param);
             if (d.kind == ParamKind::Int) {
-                const double step = a.amount >= 0 ? std::max(1.0, std::round(a.amount)) : std::min(-1.0, std::round(a.amount));
-                t.layers.set_knob(*k.param, static_cast<int>(std::clamp(std::get<int>(base) + step, d.min, d.max)));
+                const double step = a.amount >= 0 ? std::max(1.0, std::round(a.amount))
+                                                  : std::min(-1.0, std::round(a.amount));
+                t.layers.set_knob(*k.param,
+                                  static_cast<int>(std::clamp(std::get<int>(base) + step, d.min, d.max)));
             } else {
-                t.layers.set_knob(*k.param, static_cast<float>(static_cast<double>(std::get<float>(base)) + a.amount));
+                // Snapped to a thousandth of the knob's step: float sums drift (0.5 + 8 x 0.1 = 1.3000001),
+                // and the value is shown, logged and saved as it is.
+                const double step = k.step != 0 ? k.step : (d.max - d.min) / 50.0;  // as the knob's default
+                const double grid = std::abs(step) / 1000.0;
+                double v = static_cast<double>(std::get<float>(base)) + a.amount;
+                if (grid > 0) v = std::round(v / grid) * grid;
+                t.layers.set_knob(*k.param, static_cast<float>(v));
             }
             break;
         }
-        case io::KnobAction::Kind::Level: t.layers.set_knob(*k.param, a.level); break;
+        case io::KnobAction::Kind::Level:
+            t.layers.set_knob(*k.param, a.level);
+            break;
         case io::KnobAction::Kind::Press:
             switch (k.action) {
                 case params::ButtonAction::NextPreset:
                 case params::ButtonAction::PreviousPreset: {
                     const int dir = k.action == params::ButtonAction::NextPreset ? 1 : -1;
                     const std::string next = t.layers.presets().step(t.layers.preset_name(), dir);
-                    if (auto r = t.layers.select_preset(next); !r) spdlog::warn("{}", r.error().message);
-                    else spdlog::info("preset: {} (knob)", next);
+                    if (auto r = t.layers.select_preset(next); !r)
+                        spdlog::warn("{}", r.error().message);
+                    else
+                        spdlog::info("preset: {} (knob)", next);
                     break;
                 }
-                case params::ButtonAction::Reset: t.layers.clear_knob(*k.param); break;
+                case params::ButtonAction::Reset:
+                    t.layers.clear_knob(*k.param);
+                    break;
                 case params::ButtonAction::Toggle: {
                     const auto& held = t.layers.knob(*k.param);
                     t.layers.set_knob(*k.param, !std::get<bool>(held ? *held : current.at(*k.param)));
@@ -126,12 +140,15 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
     bool reload = std::exchange(t.reload_requested, false);
     if (t.watcher) {
         switch (t.watcher->poll()) {
-            case params::ConfigWatcher::Change::Written: reload = true; break;
+            case params::ConfigWatcher::Change::Written:
+                reload = true;
+                break;
             case params::ConfigWatcher::Change::Removed:
                 spdlog::warn("config: {} was removed; keeping the last good configuration until it is back",
                              t.config_path);
                 break;
-            case params::ConfigWatcher::Change::None: break;
+            case params::ConfigWatcher::Change::None:
+                break;
         }
     }
     if (reload) reload_config(t);
@@ -156,8 +173,10 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
 void save_state(LiveTuning& t) {
     if (!t.state_dirty || !t.state) return;
     t.state_dirty = false;
-    if (auto r = t.state->save(t.layers.state_text()); !r) spdlog::warn("{}", r.error().message);
-    else spdlog::info("state: knob values saved to {}", t.state->path());
+    if (auto r = t.state->save(t.layers.state_text()); !r)
+        spdlog::warn("{}", r.error().message);
+    else
+        spdlog::info("state: knob values saved to {}", t.state->path());
 }
 
 void add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning) {

@@ -147,8 +147,9 @@ std::string format_value(const ParamValue& v) {
     struct Visitor {
         std::string operator()(bool b) const { return b ? "true" : "false"; }
         std::string operator()(int i) const { return fmt::format("{}", i); }
-        std::string operator()(float f) const { return fmt::format("{:g}", f); }
-        std::string operator()(const glm::vec3& c) const { return fmt::format("[{:g}, {:g}, {:g}]", c.x, c.y, c.z); }
+        // The shortest text that reads back as the same float: the state file keeps knob values exactly.
+        std::string operator()(float f) const { return fmt::format("{}", f); }
+        std::string operator()(const glm::vec3& c) const { return fmt::format("[{}, {}, {}]", c.x, c.y, c.z); }
         std::string operator()(const std::string& s) const { return fmt::format("\"{}\"", s); }
     };
     return std::visit(Visitor{}, v);

@@ -24,7 +24,8 @@ TEST(ParamLayers, PrecedenceDefaultPresetConfigKnobCommandLine) {
     ASSERT_TRUE(set);
     ParamLayers l = layers({*set});
     // downpour sets drop_count 100, intensity 0.2, speed 2.5, fog 0.02.
-    ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n[rain]\nintensity = 0.6\nspeed = 3.0\n[look]\nfog_density = 0.05\n")));
+    ASSERT_TRUE(l.set_config(
+        config("preset = \"downpour\"\n[rain]\nintensity = 0.6\nspeed = 3.0\n[look]\nfog_density = 0.05\n")));
     l.set_knob(ParamId::look_fog_density, 0.1f);
     const Params p = l.compose();
     EXPECT_EQ(p.i(ParamId::rain_drop_count), 100);
@@ -54,7 +55,8 @@ TEST(ParamLayers, UnknownPresetIsRejectedWithFileLineAndTheChoices) {
     auto r = l.set_config(config("\n\npreset = \"donwpour\"\n"));
     ASSERT_FALSE(r);
     EXPECT_NE(r.error().message.find("test.toml:3"), std::string::npos) << r.error().message;
-    EXPECT_NE(r.error().message.find("downpour"), std::string::npos) << "lists the presets: " << r.error().message;
+    EXPECT_NE(r.error().message.find("downpour"), std::string::npos)
+        << "lists the presets: " << r.error().message;
     EXPECT_EQ(l.compose().i(ParamId::rain_drop_count), 3) << "the last good config stays";
 }
 
@@ -94,13 +96,30 @@ TEST(ParamLayers, StateTextRoundTripsThroughTheConfigParser) {
     EXPECT_EQ(restored.preset_name(), "mirror");
 }
 
+// Saved state is the user's data: a knob's value comes back bit for bit, not rounded to 6 digits.
+TEST(ParamLayers, SavedFloatsComeBackBitForBit) {
+    ParamLayers l = layers();
+    const float intensity = 1.0f / 3.0f;  // 0.333333343...: 6 significant digits would lose it
+    const glm::vec3 tint(0.1234567f, 2.0f / 7.0f, 0.9999999f);
+    l.set_knob(ParamId::rain_intensity, intensity);
+    l.set_knob(ParamId::water_tint, tint);
+    auto state = parse_config(l.state_text(), "state.toml");
+    ASSERT_TRUE(state) << state.error().message << "\n" << l.state_text();
+    ParamLayers restored = layers();
+    ASSERT_TRUE(restored.restore_state(*state));
+    EXPECT_EQ(std::get<float>(restored.compose().at(ParamId::rain_intensity)), intensity) << l.state_text();
+    EXPECT_EQ(std::get<glm::vec3>(restored.compose().at(ParamId::water_tint)), tint) << l.state_text();
+}
+
 TEST(ParamLayers, PrintConfigNamesThePresetOfEachPresetValue) {
     ParamLayers l = layers();
     ASSERT_TRUE(l.set_config(config("preset = \"murky_pond\"\n")));
     const std::string text = format_effective(l.compose(), l.preset_name());
-    EXPECT_NE(text.find("water.turbidity            = 0.08                     # preset murky_pond"), std::string::npos)
+    EXPECT_NE(text.find("water.turbidity            = 0.08                     # preset murky_pond"),
+              std::string::npos)
         << text;
-    EXPECT_NE(text.find("rain.seed                  = 1                        # default"), std::string::npos) << text;
+    EXPECT_NE(text.find("rain.seed                  = 1                        # default"), std::string::npos)
+        << text;
 }
 
 TEST(Presets, AtLeastFiveDocumentedLooksThatAllLoad) {
@@ -114,7 +133,8 @@ TEST(Presets, AtLeastFiveDocumentedLooksThatAllLoad) {
         EXPECT_FALSE(c->entries.empty()) << name;
     }
     for (const EmbeddedPreset& e : embedded_presets())
-        EXPECT_EQ(std::string_view(e.text).substr(0, 2), "# ") << e.name << " starts with a comment saying what it is";
+        EXPECT_EQ(std::string_view(e.text).substr(0, 2), "# ")
+            << e.name << " starts with a comment saying what it is";
 }
 
 TEST(Presets, StepWrapsInNameOrder) {
@@ -170,8 +190,10 @@ TEST(ConfigKnobs, MistakesNameFileLineAndWhatIsExpected) {
     const Case cases[] = {
         {"[[knob]]\nkind = \"dial\"\n", "kind must be"},
         {"[[knob]]\nkind = \"encoder\"\na = 1\nparam = \"rain.intensity\"\n", "'b' is missing"},
-        {"[[knob]]\nkind = \"encoder\"\na = 1\nb = 2\nparam = \"rain.intensty\"\n", "did you mean 'rain.intensity'"},
-        {"[[knob]]\nkind = \"encoder\"\na = 1\nb = 2\nparam = \"ground.checkerboard\"\n", "a number parameter"},
+        {"[[knob]]\nkind = \"encoder\"\na = 1\nb = 2\nparam = \"rain.intensty\"\n",
+         "did you mean 'rain.intensity'"},
+        {"[[knob]]\nkind = \"encoder\"\na = 1\nb = 2\nparam = \"ground.checkerboard\"\n",
+         "a number parameter"},
         {"[[knob]]\nkind = \"switch\"\nline = 3\nparam = \"rain.intensity\"\n", "true/false parameter"},
         {"[[knob]]\nkind = \"button\"\nline = 3\n", "needs an action"},
         {"[[knob]]\nkind = \"button\"\nline = 3\naction = \"save\"\nspin = 2\n", "unknown key 'spin'"},
