@@ -31,7 +31,11 @@ Result<void> ParamLayers::set_config(Config config) {
     Config preset;
     if (auto r = resolve_preset(name, preset); !r) {
         if (!knob_preset_.empty()) return r;
-        return make_error(ExitCode::Config, "config: {}:{}: {}", config.path, config.preset_line, r.error().message);
+        // "config: PRESET:2: ..." (a broken preset file) already names its file; say which line chose it.
+        std::string_view inner = r.error().message;
+        if (inner.starts_with("config: ")) inner.remove_prefix(8);
+        return make_error(ExitCode::Config, "config: {}:{}: preset = \"{}\": {}", config.path, config.preset_line,
+                          name, inner);
     }
     config_ = std::move(config);
     preset_ = std::move(preset);

@@ -44,7 +44,9 @@ TEST(InputFiles, APresetPastTheLimitsExitsWith2NamingThePresetFile) {
     const std::string config = dir.write("puddle.toml", "preset = \"deep\"\n");
     const auto r = run_puddle("--config " + config + " --print-config");
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_TRUE(has_line(r.output, "config: " + preset + ":2: key nests 50001 levels; the limit is 16"))
+    // One prefix, both places: the line that chose the preset and the preset's own line.
+    EXPECT_TRUE(has_line(r.output, "error: config: " + config + ":1: preset = \"deep\": " + preset +
+                                       ":2: key nests 50001 levels; the limit is 16"))
         << r.output;
 }
 
