@@ -1,5 +1,9 @@
 #include "assets/image_io.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -19,17 +23,23 @@ namespace fs = std::filesystem;
 
 // OIIO's "could not open" hides errno; ask the OS first so a missing file reads as one (and needs no
 // image module).
+// Only a regular file goes to the decoder: OpenImageIO opening a FIFO would wait for a writer (a
+// `mock:` camera folder holding one hung start-up), and a device would be read for ever.
 Result<void> check_readable(const std::string& path) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec))
-        return make_error(ExitCode::Asset, "image: {}: cannot open: is a directory", path);
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (f == nullptr) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         const int err = errno;
         return make_error(ExitCode::Asset, "image: {}: cannot open: {}", path,
                           std::generic_category().message(err));
     }
-    std::fclose(f);
+    struct stat st {};
+    const bool stated = ::fstat(fd, &st) == 0;
+    ::close(fd);
+    if (stated && S_ISDIR(st.st_mode))
+        return make_error(ExitCode::Asset, "image: {}: cannot open: is a directory", path);
+    if (stated && !S_ISREG(st.st_mode))
+        return make_error(ExitCode::Asset, "image: {}: cannot open: {}, not a file", path,
+                          S_ISFIFO(st.st_mode) ? "is a FIFO" : "is a device or socket");
     return {};
 }
 

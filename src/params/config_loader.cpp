@@ -14,7 +14,9 @@ namespace puddle::params {
 
 namespace {
 
-int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+int line_of(const toml::node& n) {
+    return static_cast<int>(n.source().begin.line);
+}
 
 // The value as written, on one line: numbers in their shortest form (1e+300, not toml++'s
 // 1.0000000000000001e+300), arrays as [1, 2, 3].
@@ -94,8 +96,9 @@ struct Parsed {
     std::vector<std::pair<int, Error>> problems;
 };
 
-// Reads every key of `text`. Fails only where no key can be trusted: past the input limits, or not TOML.
-Result<Parsed> parse_all(std::string_view text, std::string_view path) {
+// Reads every key of `text`. Fails only where no key can be trusted: past the input limits, or not TOML
+// (then `syntax_error_line`, when given, is the line toml++ stopped at).
+Result<Parsed> parse_all(std::string_view text, std::string_view path, int* syntax_error_line = nullptr) {
     if (auto r = check_toml_limits(text, path); !r) return r.error();
     Parsed out;
     Config& config = out.config;
@@ -104,7 +107,9 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path) {
     try {
         root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
-        return make_error(ExitCode::Config, "config: {}:{}: {}", path, e.source().begin.line, e.description());
+        if (syntax_error_line) *syntax_error_line = static_cast<int>(e.source().begin.line);
+        return make_error(ExitCode::Config, "config: {}:{}: {}", path, e.source().begin.line,
+                          e.description());
     }
     auto problem = [&](int line, Error e) { out.problems.emplace_back(line, std::move(e)); };
     for (auto&& [section_key, section_node] : root) {
@@ -137,8 +142,10 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path) {
             int index = 0;
             for (const toml::node& k : *knobs) {
                 auto knob = parse_knob(*k.as_table(), path, ++index);
-                if (!knob) problem(line_of(k), knob.error());
-                else config.knobs.push_back(std::move(*knob));
+                if (!knob)
+                    problem(line_of(k), knob.error());
+                else
+                    config.knobs.push_back(std::move(*knob));
             }
             continue;
         }
@@ -146,8 +153,9 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path) {
         if (!section) {
             const std::string key(section_key.str());
             problem(line_of(section_node),
-                    make_error(ExitCode::Config, "config: {}:{}: '{}' must be inside a [section] (did you mean '{}'?)",
-                               path, line_of(section_node), key, nearest_param_name(key)));
+                    make_error(ExitCode::Config,
+                               "config: {}:{}: '{}' must be inside a [section] (did you mean '{}'?)", path,
+                               line_of(section_node), key, nearest_param_name(key)));
             continue;
         }
         for (auto&& [key, node] : *section) {
@@ -189,10 +197,26 @@ Result<Config> parse_config(std::string_view text, std::string_view path) {
 }
 
 Result<PartialConfig> parse_config_keeping_valid(std::string_view text, std::string_view path) {
-    auto parsed = parse_all(text, path);
+    int broken_line = 0;
+    auto parsed = parse_all(text, path, &broken_line);
+    std::optional<std::string> syntax_error;
+    if (!parsed && broken_line > 1) {
+        // Not TOML from some line on (a hand edit gone wrong): the keys before it are still good.
+        std::size_t cut = 0;
+        for (int line = 1; line < broken_line && cut != std::string_view::npos; ++line) {
+            cut = text.find('\n', cut);
+            if (cut != std::string_view::npos) ++cut;
+        }
+        if (cut != std::string_view::npos) {
+            syntax_error =
+                fmt::format("{}; the keys from line {} on are dropped", parsed.error().message, broken_line);
+            parsed = parse_all(text.substr(0, cut), path);
+        }
+    }
     if (!parsed) return parsed.error();
     PartialConfig out{std::move(parsed->config), {}};
     for (auto& [line, e] : parsed->problems) out.dropped.push_back(std::move(e.message));
+    if (syntax_error) out.dropped.push_back(std::move(*syntax_error));
     return out;
 }
 
@@ -209,12 +233,13 @@ void apply_config(const Config& config, Params& params, ParamSource source) {
 Result<ConfigEntry> parse_assignment(std::string_view assignment) {
     const auto eq = assignment.find('=');
     if (eq == std::string_view::npos)
-        return make_error(ExitCode::Config, "--set {}: expected name=value, e.g. --set rain.drop_count=20", assignment);
+        return make_error(ExitCode::Config, "--set {}: expected name=value, e.g. --set rain.drop_count=20",
+                          assignment);
     const std::string_view name = assignment.substr(0, eq);
     const ParamDecl* d = find_param(name);
     if (!d)
-        return make_error(ExitCode::Config, "--set {}: unknown parameter '{}' (did you mean '{}'?)", assignment, name,
-                          nearest_param_name(name));
+        return make_error(ExitCode::Config, "--set {}: unknown parameter '{}' (did you mean '{}'?)",
+                          assignment, name, nearest_param_name(name));
     auto value = parse_value(*d, assignment.substr(eq + 1));
     if (!value) return make_error(ExitCode::Config, "--set: {}", value.error().message);
     return ConfigEntry{d->id, std::move(value).value(), 0};

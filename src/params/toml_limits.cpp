@@ -1,8 +1,11 @@
 #include "params/toml_limits.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <optional>
 
 namespace puddle::params {
@@ -230,14 +233,45 @@ Result<void> check_toml_limits(std::string_view text, std::string_view path) {
     return {};
 }
 
+std::string_view file_kind(mode_t mode) {
+    if (S_ISDIR(mode)) return "a folder";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
 Result<std::string> read_toml_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return make_error(ExitCode::Config, "config: {}: cannot open: {}", path, std::strerror(errno));
+    // O_NONBLOCK: opening a FIFO for reading would wait for a writer, with the frame loop (and SIGTERM's
+    // handling) stuck in open(); only a regular file is read at all.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return make_error(ExitCode::Config, "config: {}: cannot open: {}", path, std::strerror(errno));
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        const int err = errno;
+        const mode_t mode = st.st_mode;
+        ::close(fd);
+        if (mode == 0)
+            return make_error(ExitCode::Config, "config: {}: cannot read: {}", path, std::strerror(err));
+        return make_error(ExitCode::Config, "config: {}: is {}, not a file", path, file_kind(mode));
+    }
     std::string text(toml_limits.max_bytes + 1, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    if (in.bad())
-        return make_error(ExitCode::Config, "config: {}: cannot read: {}", path, std::strerror(errno));
+    std::size_t got = 0;
+    while (got < text.size()) {
+        const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            const int err = errno;
+            ::close(fd);
+            return make_error(ExitCode::Config, "config: {}: cannot read: {}", path, std::strerror(err));
+        }
+        if (n == 0) break;
+        got += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    text.resize(got);
     if (text.size() > toml_limits.max_bytes)
         return make_error(ExitCode::Config, "config: {}: larger than 1 MiB; the limit is {} bytes", path,
                           toml_limits.max_bytes);

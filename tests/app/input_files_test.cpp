@@ -2,6 +2,7 @@
 // parameter's range stop start-up with exit code 2 and one line naming the file, the line and the limit.
 // Only --print-config is run, so no display or GPU is needed.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <string>
@@ -79,6 +80,17 @@ TEST(InputFiles, TheVideoWallCasesExitWith2) {
         EXPECT_TRUE(has_line(r.output, "is out of range: allowed an integer from 0 to 2147483647"))
             << r.output;
     }
+}
+
+// A FIFO as the config: exit 2 with one line at once (the program used to wait in open() for a writer,
+// for ever; the state file and presets are read the same way, see TomlLimits).
+TEST(InputFiles, AFifoAsTheConfigExitsWith2AtOnce) {
+    TempDir dir;
+    const std::string fifo = (dir / "puddle.toml").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto r = run_puddle("--config " + fifo + " --print-config");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_TRUE(has_line(r.output, "config: " + fifo + ": is a FIFO, not a file")) << r.output;
 }
 
 }  // namespace

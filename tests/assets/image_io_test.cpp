@@ -1,6 +1,7 @@
 #include "assets/image_io.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -156,6 +157,16 @@ TEST(ImageLimits, TheLimitsThemselvesAreAllowed) {
     EXPECT_FALSE(check_image_size("a", 8193, 8192, PixelFormat::RGBA32F).ok());
     EXPECT_FALSE(check_image_size("a", 1, max_image_side + 1, PixelFormat::RGBA8).ok());
     EXPECT_FALSE(check_image_size("a", 0, 1, PixelFormat::RGBA8).ok());
+}
+
+// A FIFO in a mock camera folder, or named as the sky, once hung start-up inside the decoder's open().
+TEST_F(ImageIoTest, AFifoIsRefusedWithoutWaitingForAWriter) {
+    const std::string fifo = path("sky.png");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    auto img = read_image(fifo);
+    ASSERT_FALSE(img.ok());
+    EXPECT_EQ(img.error().code, ExitCode::Asset);
+    EXPECT_EQ(img.error().message, "image: " + fifo + ": cannot open: is a FIFO, not a file");
 }
 
 TEST_F(ImageIoTest, MissingFileNamesThePathAndTheReason) {

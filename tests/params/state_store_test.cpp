@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -69,6 +70,31 @@ TEST(StateStore, AFileThatIsNotTomlGivesNoStateAndOneProblemAndIsLeftInPlace) {
     EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + " is unreadable (config: " + path + ":1: "))
         << loaded.problems[0];
     EXPECT_EQ(read(path), text) << "load() reads only";
+}
+
+// A hand edit that breaks the TOML on line 3 keeps the value on line 2 (it used to lose every value).
+TEST(StateStore, AFileThatStopsBeingTomlKeepsTheKeysBeforeTheBreak) {
+    test::TempDir dir;
+    const std::string path = dir.write("state.toml", "[rain]\nintensity = 0.5\n[look\nvignette = 1.1\n");
+    auto loaded = StateStore(path).load();
+    ASSERT_TRUE(loaded.state);
+    ASSERT_EQ(loaded.state->entries.size(), 1u);
+    EXPECT_EQ(loaded.state->entries[0].id, ParamId::rain_intensity);
+    EXPECT_EQ(std::get<float>(loaded.state->entries[0].value), 0.5f);
+    ASSERT_EQ(loaded.problems.size(), 1u);
+    EXPECT_NE(loaded.problems[0].find(path + ":3: "), std::string::npos) << loaded.problems[0];
+    EXPECT_NE(loaded.problems[0].find("the keys from line 3 on are dropped"), std::string::npos) << loaded.problems[0];
+}
+
+// A FIFO named as the state file is reported, not waited on.
+TEST(StateStore, AFifoIsAProblemNotAWait) {
+    test::TempDir dir;
+    const std::string fifo = (dir / "state.toml").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    auto loaded = StateStore(fifo).load();
+    EXPECT_FALSE(loaded.state);
+    ASSERT_EQ(loaded.problems.size(), 1u);
+    EXPECT_NE(loaded.problems[0].find("is a FIFO, not a file"), std::string::npos) << loaded.problems[0];
 }
 
 // The set-aside names in `dir`, sorted.

@@ -3,6 +3,9 @@
 #include "params/toml_limits.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <chrono>
 
 #include <filesystem>
 #include <fstream>
@@ -112,13 +115,30 @@ TEST(TomlLimits, ReadingStopsOneBytePastTheLimit) {
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, ExitCode::Config);
     EXPECT_EQ(r.error().message, "config: " + big + ": larger than 1 MiB; the limit is 1048576 bytes");
-    // An endless source (a character device named as the config) ends too.
+    // An endless source (a character device named as the config) is not read at all.
     auto zero = read_toml_file("/dev/zero");
     ASSERT_FALSE(zero);
-    EXPECT_EQ(zero.error().message, "config: /dev/zero: larger than 1 MiB; the limit is 1048576 bytes");
+    EXPECT_EQ(zero.error().message, "config: /dev/zero: is a character device, not a file");
     auto config = load_config_file(big);
     ASSERT_FALSE(config);
     EXPECT_EQ(config.error().message, r.error().message);
+}
+
+// A FIFO named as the config (or a preset, or the state file) once left the program waiting in open()
+// for a writer: at start-up for ever, and on a running display with the frames and SIGTERM stuck.
+TEST(TomlLimits, AFifoOrAFolderIsRefusedAtOnceWithoutWaitingForAWriter) {
+    test::TempDir dir;
+    const std::string fifo = (dir / "puddle.toml").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto start = std::chrono::steady_clock::now();
+    auto r = read_toml_file(fifo);  // before: blocked here until a writer came
+    ASSERT_FALSE(r);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_EQ(r.error().code, ExitCode::Config);
+    EXPECT_EQ(r.error().message, "config: " + fifo + ": is a FIFO, not a file");
+    auto folder = read_toml_file(dir.path().string());
+    ASSERT_FALSE(folder);
+    EXPECT_EQ(folder.error().message, "config: " + dir.path().string() + ": is a folder, not a file");
 }
 
 }  // namespace
