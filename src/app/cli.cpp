@@ -56,7 +56,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         ->check(CLI::Range(0L, 1000000000L));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")->check(CLI::Range(0, 2147483647));
-    cli.add_option("--fps-cap", o.fps_cap, "Render at most this many frames per second (fanless boards)")
+    cli.add_option("--fps-cap", o.fps_cap, "kms and window: render at most this many frames per second (fanless boards); "
+                   "headless: each frame is 1/N s of simulated time, rendered as fast as it can be (0: no cap)")
         ->check(CLI::Range(0.0, 1000.0));
     cli.add_flag("--fixed-step", o.fixed_step,
                  "Advance simulated time by 1/60 s (or 1/fps-cap) per frame on any backend, as headless runs do: "
