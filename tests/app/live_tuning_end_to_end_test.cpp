@@ -16,13 +16,6 @@
 namespace puddle::test {
 namespace {
 
-std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 constexpr const char* knob_config = R"(
 [[knob]]
 kind = "encoder"

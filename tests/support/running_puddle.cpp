@@ -1,5 +1,7 @@
 #include "support/running_puddle.hpp"
 
+#include "support/test_support.hpp"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -13,15 +15,6 @@
 extern char** environ;
 
 namespace puddle::test {
-
-namespace {
-std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-}  // namespace
 
 Running::Running(const std::vector<std::string>& args, std::filesystem::path log,
                  const std::vector<std::string>& environment)

@@ -23,6 +23,9 @@ private:
     std::filesystem::path path_;
 };
 
+// A file's bytes, empty when it cannot be read.
+std::string read_file(const std::filesystem::path& p);
+
 // ../shared/assets, or empty when the shared folder is absent (tests then GTEST_SKIP with a message).
 std::string shared_assets_dir();
 
