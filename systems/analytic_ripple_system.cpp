@@ -6,7 +6,6 @@
 #include <span>
 
 #include "systems/drop_system.hpp"
-#include "systems/scene_select.hpp"
 
 namespace puddle::systems {
 
@@ -51,15 +50,23 @@ void set_analytic_source(AnalyticRipples& ripples, int index, const AnalyticSour
     row[2] = {s.amplitude, s.max_phase, 0, 0};
 }
 
+namespace {
+gpu::PipelineDesc analytic_ripples_desc(const Surface& surface) {
+    std::vector<std::string> defines;
+    if (surface.unorm) defines.emplace_back("SURFACE_UNORM");
+    return {.label = "analytic ripples",
+            .fragment = "analytic_ripples.frag",
+            .defines = defines,
+            .textures = {"u_sources"}};
+}
+}  // namespace
+
+bool request_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples) {
+    return ripples.pass.request(device, [&] { return analytic_ripples_desc(surface); });
+}
+
 Result<void> prepare_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples) {
-    auto r = ripples.pass.ensure(device, [&] {
-        std::vector<std::string> defines;
-        if (surface.unorm) defines.emplace_back("SURFACE_UNORM");
-        return gpu::PipelineDesc{.label = "analytic ripples",
-                                 .fragment = "analytic_ripples.frag",
-                                 .defines = defines,
-                                 .textures = {"u_sources"}};
-    });
+    auto r = ripples.pass.ensure(device, [&] { return analytic_ripples_desc(surface); });
     if (!r) return r;
     if (!ripples.sources) {
         auto sources = device.create_texture({.label = "analytic sources",
@@ -90,7 +97,6 @@ void analytic_ripple_pass(gpu::Device& device, AnalyticRipples& ripples, Surface
 
 void analytic_ripple_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                             AnalyticRipples& ripples, Surface& surface) {
-    if (selected_scene(params) != Scene::Puddle || selected_drop_model(params) != DropModel::Analytic) return;
     const bool failed_before = ripples.pass.failed;
     if (auto r = prepare_analytic_ripples(device, surface, ripples); !r) {
         if (!failed_before) spdlog::error("{}", r.error().message);  // one line, then draw nothing

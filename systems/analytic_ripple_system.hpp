@@ -55,10 +55,12 @@ double analytic_height(const AnalyticSource& s, double d);
 void set_analytic_source(AnalyticRipples& ripples, int index, const AnalyticSource& s);
 
 Result<void> prepare_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples);
+// Starts building the pipeline off the frame thread (systems/look_switch.hpp); true once ready.
+bool request_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples);
 // Uploads the first ripples.count sources and writes the surface from them.
 void analytic_ripple_pass(gpu::Device& device, AnalyticRipples& ripples, Surface& surface);
 
-// Render stage, before the puddle pass: when the scene is the puddle and drops.model = analytic.
+// Render stage, before the puddle pass, while the puddle with analytic drops is the look shown.
 void analytic_ripple_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                             AnalyticRipples& ripples, Surface& surface);
 

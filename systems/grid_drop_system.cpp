@@ -7,7 +7,6 @@
 #include <cstdint>
 
 #include "systems/param_uniforms.hpp"
-#include "systems/scene_select.hpp"
 
 namespace puddle::systems {
 
@@ -19,12 +18,20 @@ float grid_cell_texels(const params::Params& params, int field_resolution) {
     return static_cast<float>(field_resolution / std::sqrt(cells));
 }
 
+namespace {
+gpu::PipelineDesc grid_drops_desc(const Surface& surface, int reach) {
+    std::vector<std::string> defines{fmt::format("GRID_REACH {}", reach)};
+    if (surface.unorm) defines.emplace_back("SURFACE_UNORM");
+    return {.label = "grid drops", .fragment = "grid_drops.frag", .defines = defines};
+}
+}  // namespace
+
 Result<void> prepare_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid, int reach) {
-    return grid.pass.ensure(device, [&] {
-        std::vector<std::string> defines{fmt::format("GRID_REACH {}", reach)};
-        if (surface.unorm) defines.emplace_back("SURFACE_UNORM");
-        return gpu::PipelineDesc{.label = "grid drops", .fragment = "grid_drops.frag", .defines = defines};
-    });
+    return grid.pass.ensure(device, [&] { return grid_drops_desc(surface, reach); });
+}
+
+bool request_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid) {
+    return grid.pass.request(device, [&] { return grid_drops_desc(surface, 1); });
 }
 
 void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
@@ -49,7 +56,6 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
 
 void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                       GridDrops& grid, Surface& surface) {
-    if (selected_scene(params) != Scene::Puddle || selected_drop_model(params) != DropModel::Grid) return;
     const bool failed_before = grid.pass.failed;
     if (auto r = prepare_grid_drops(device, surface, grid); !r) {
         if (!failed_before) spdlog::error("{}", r.error().message);  // one line, then draw nothing

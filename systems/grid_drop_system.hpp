@@ -23,12 +23,14 @@ float grid_cell_texels(const params::Params& params, int field_resolution);
 
 // reach 1 is the technique (3x3 cells); tests build reach 2 (5x5) to show nothing is lost outside 3x3.
 Result<void> prepare_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid, int reach = 1);
+// Starts building the reach-1 pipeline off the frame thread (systems/look_switch.hpp); true once ready.
+bool request_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid);
 
 // Writes the surface for simulated time `now`; only_cell >= 0 isolates one cell's drop (tests).
 void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
                     Surface& surface, glm::ivec2 only_cell = {-1, -1});
 
-// Render stage, before the puddle pass: when the scene is the puddle and drops.model = grid.
+// Render stage, before the puddle pass, while the puddle with grid drops is the look shown.
 void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                       GridDrops& grid, Surface& surface);
 

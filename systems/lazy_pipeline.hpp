@@ -1,7 +1,9 @@
 #pragma once
 // A pipeline built the first time its system is chosen, so scenes and models nobody selects cost no
-// shader compiles at start-up, and a scene switched on at run time still works. A failed build logs one
-// line, once, and the system then draws nothing instead of retrying every frame.
+// shader compiles at start-up, and a look switched on at run time still works. At start-up `ensure`
+// builds at once (a broken shader stops start-up with its message); in the frame loop `request` has it
+// built off the frame thread (Device::request_pipeline) and says when it is ready, so the old picture
+// stays on screen meanwhile. A failed build logs one line, once, and is not tried again.
 
 #include <spdlog/spdlog.h>
 
@@ -11,33 +13,45 @@ namespace puddle::systems {
 
 struct LazyPipeline {
     gpu::Pipeline pipeline;
+    gpu::PipelineRequest building;  // a request in flight
     bool failed = false;
 
     bool ready() const { return pipeline.id() != 0; }
 
-    // make_desc is called only when a build is due, so the steady state allocates nothing.
+    // Builds it now, waiting for the compile. make_desc is called only when a build is due, so the
+    // steady state allocates nothing.
     template <class MakeDesc>
     Result<void> ensure(gpu::Device& device, MakeDesc&& make_desc) {
         if (ready()) return {};
         if (failed) return make_error(ExitCode::Runtime, "gpu: pipeline failed to build before");
-        auto p = device.create_pipeline(make_desc());
-        if (!p) {
-            failed = true;
-            return p.error();
-        }
-        pipeline = std::move(p).value();
-        return {};
+        building = {};
+        return keep(device.create_pipeline(make_desc()));
     }
 
-    // For systems in the frame loop: true when the pipeline can be used.
+    // For systems in the frame loop: true when the pipeline can be used. Otherwise starts (or checks on)
+    // a build that does not block; a failure is logged once.
     template <class MakeDesc>
-    bool ensure_or_log(gpu::Device& device, MakeDesc&& make_desc) {
-        const bool was_failed = failed;
-        if (auto r = ensure(device, std::forward<MakeDesc>(make_desc)); !r) {
-            if (!was_failed) spdlog::error("{}", r.error().message);
+    bool request(gpu::Device& device, MakeDesc&& make_desc) {
+        if (ready()) return true;
+        if (failed) return false;
+        if (!building.active()) building = device.request_pipeline(make_desc());
+        auto built = device.take_pipeline(building);
+        if (!built) return false;
+        if (auto r = keep(std::move(*built)); !r) {
+            spdlog::error("{}", r.error().message);
             return false;
         }
         return true;
+    }
+
+private:
+    Result<void> keep(Result<gpu::Pipeline> built) {
+        if (!built) {
+            failed = true;
+            return built.error();
+        }
+        pipeline = std::move(built).value();
+        return {};
     }
 };
 

@@ -5,7 +5,6 @@
 
 #include "systems/camera_basis.hpp"
 #include "systems/param_uniforms.hpp"
-#include "systems/scene_select.hpp"
 #include "systems/shader_phase.hpp"
 
 namespace puddle::systems {
@@ -35,10 +34,11 @@ Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean) {
     return ocean.pass.ensure(device, ocean_desc);
 }
 
+bool request_ocean(gpu::Device& device, OceanRenderer& ocean) { return ocean.pass.request(device, ocean_desc); }
+
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                   OceanRenderer& ocean, const RenderTarget& target) {
-    if (selected_scene(params) != Scene::Ocean) return;
-    if (!ocean.pass.ensure_or_log(device, ocean_desc)) return;
+    if (!ocean.pass.request(device, ocean_desc)) return;
     const gpu::FrameTarget& frame = target.target;
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
     const CameraBasis cam =

@@ -38,6 +38,8 @@ struct OceanRenderer {
 // Builds the pipeline now (start-up, when the config chose the ocean); otherwise the system does on first
 // use.
 Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean);
+// Starts building it off the frame thread (the look switch, systems/look_switch.hpp); true once ready.
+bool request_ocean(gpu::Device& device, OceanRenderer& ocean);
 
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                   OceanRenderer& ocean, const RenderTarget& target);

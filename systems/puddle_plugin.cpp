@@ -11,6 +11,7 @@
 #include "systems/environment_system.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/grid_drop_system.hpp"
+#include "systems/look_switch.hpp"
 #include "systems/ocean_system.hpp"
 #include "systems/rain_overlay_system.hpp"
 #include "systems/render_system.hpp"
@@ -62,8 +63,14 @@ void wave_rebuild_system(ecs::World& world) {
 
 // The puddle's surface comes from the wave field only with the pulse drops; analytic and grid drops
 // write it themselves, and the other scenes need no simulation at all.
-bool wave_field_in_use(const Params& params) {
-    return selected_scene(params) == Scene::Puddle && selected_drop_model(params) == DropModel::Pulse;
+bool wave_field_in_use(ecs::World& w) {
+    const ShownLook& look = w.resource<ShownLook>();
+    return look.scene == Scene::Puddle && look.drops == DropModel::Pulse;
+}
+
+bool shown(ecs::World& w, Scene scene) { return w.resource<ShownLook>().scene == scene; }
+bool shown(ecs::World& w, DropModel drops) {
+    return shown(w, Scene::Puddle) && w.resource<ShownLook>().drops == drops;
 }
 
 // Start-up builds the pipelines of the look the config chose, so a broken shader stops start-up with its
@@ -119,6 +126,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     world.insert_resource<StreetRenderer>();
     world.insert_resource<RainOverlay>();
     if (auto r = prepare_selected_look(world); !r) return r;
+    world.insert_resource<ShownLook>(selected_look(params));
 
     schedule.set_step_counter([](ecs::World& w) { return w.resource<FrameClock>().steps_due; });
 
@@ -127,6 +135,11 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     });
     schedule.add_system(ecs::Stage::Input, "wave rebuild", wave_rebuild_system);
     schedule.add_system(ecs::Stage::Input, "environment reload", environment_reload_system);
+    schedule.add_system(ecs::Stage::Input, "look switch", [](ecs::World& w) {
+        look_switch_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Surface>(),
+                           w.resource<OceanRenderer>(), w.resource<StreetRenderer>(),
+                           w.resource<AnalyticRipples>(), w.resource<GridDrops>(), w.resource<ShownLook>());
+    });
     schedule.add_system(ecs::Stage::Input, "camera feed", [](ecs::World& w) {
         camera_feed_system(w.resource<CameraFeed>(), w.resource<Params>(), w.resource<FrameClock>(),
                            w.resource<gpu::Device>(), w.resource<CameraEnvironment>());
@@ -135,18 +148,18 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.add_system(ecs::Stage::Simulate, "begin step",
                         [](ecs::World& w) { begin_step_system(w.resource<FrameClock>()); });
     schedule.add_system(ecs::Stage::Simulate, "drops", [](ecs::World& w) {
-        if (!wave_field_in_use(w.resource<Params>())) return;
+        if (!wave_field_in_use(w)) return;
         drop_system(w.resource<Params>(), w.resource<FrameClock>(), w, w.resource<DropSlots>(),
                     w.resource<LiveDrops>());
     });
     schedule.add_system(ecs::Stage::Simulate, "wave", [](ecs::World& w) {
-        if (!wave_field_in_use(w.resource<Params>())) return;
+        if (!wave_field_in_use(w)) return;
         wave_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<LiveDrops>(),
                     w.resource<WaveField>());
     });
 
     schedule.add_system(ecs::Stage::Render, "surface", [](ecs::World& w) {
-        if (!wave_field_in_use(w.resource<Params>())) return;
+        if (!wave_field_in_use(w)) return;
         surface_system(w.resource<gpu::Device>(), w.resource<WaveField>(), w.resource<Surface>());
     });
     schedule.add_system(ecs::Stage::Render, "camera environment", [](ecs::World& w) {
@@ -154,24 +167,28 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
                                   w.resource<CameraEnvironment>());
     });
     schedule.add_system(ecs::Stage::Render, "analytic ripples", [](ecs::World& w) {
+        if (!shown(w, DropModel::Analytic)) return;
         analytic_ripple_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
                                w.resource<AnalyticRipples>(), w.resource<Surface>());
     });
     schedule.add_system(ecs::Stage::Render, "grid drops", [](ecs::World& w) {
+        if (!shown(w, DropModel::Grid)) return;
         grid_drop_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
                          w.resource<GridDrops>(), w.resource<Surface>());
     });
     schedule.add_system(ecs::Stage::Render, "puddle", [](ecs::World& w) {
-        if (selected_scene(w.resource<Params>()) != Scene::Puddle) return;
+        if (!shown(w, Scene::Puddle)) return;
         render_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<Surface>(),
                       w.resource<Environment>(), w.resource<Ground>(), w.resource<PuddleRenderer>(),
                       w.resource<RenderTarget>(), w.resource<CameraEnvironment>().reflection());
     });
     schedule.add_system(ecs::Stage::Render, "ocean", [](ecs::World& w) {
+        if (!shown(w, Scene::Ocean)) return;
         ocean_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
                      w.resource<OceanRenderer>(), w.resource<RenderTarget>());
     });
     schedule.add_system(ecs::Stage::Render, "street", [](ecs::World& w) {
+        if (!shown(w, Scene::Street)) return;
         street_system(w.resource<gpu::Device>(), w.resource<Params>(), w.resource<FrameClock>(),
                       w.resource<StreetRenderer>(), w.resource<RenderTarget>());
     });

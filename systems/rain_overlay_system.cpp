@@ -27,7 +27,7 @@ Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) {
 void rain_overlay_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                          RainOverlay& rain, const RenderTarget& target) {
     if (!params.b(ParamId::overlay_rain)) return;
-    if (!rain.pass.ensure_or_log(device, rain_desc)) return;
+    if (!rain.pass.request(device, rain_desc)) return;  // switched on live: drawn once built
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "rain streaks", .target = frame, .load = gpu::LoadOp::Load});
     pass.set_pipeline(rain.pass.pipeline);

@@ -26,10 +26,15 @@ gpu::PipelineDesc puddle_desc(const PuddleVariant& v, bool surface_unorm) {
 }  // namespace
 
 const gpu::Pipeline* PuddleRenderer::pipeline(gpu::Device& device, const PuddleVariant& v) {
-    LazyPipeline& slot = variants[variant_index(v)];
+    const std::size_t index = variant_index(v);
+    LazyPipeline& slot = variants[index];
     const bool was_ready = slot.ready();
-    if (!slot.ensure_or_log(device, [&] { return puddle_desc(v, surface_unorm); })) return nullptr;
+    if (!slot.request(device, [&] { return puddle_desc(v, surface_unorm); })) {
+        if (shown == puddle_variant_count) return nullptr;
+        return &variants[shown].pipeline;  // also when `v` failed: the last good picture stays
+    }
     if (!was_ready) spdlog::debug("render: compiled the puddle shader for {}", describe(v));
+    shown = index;
     return &slot.pipeline;
 }
 
@@ -38,7 +43,8 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
     renderer = PuddleRenderer{};
     renderer.surface_unorm = surface.unorm;
     const PuddleVariant v = choose_puddle_variant(params, env.rgbm);
-    return renderer.variants[variant_index(v)].ensure(device, [&] { return puddle_desc(v, surface.unorm); });
+    renderer.shown = variant_index(v);
+    return renderer.variants[renderer.shown].ensure(device, [&] { return puddle_desc(v, surface.unorm); });
 }
 
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,

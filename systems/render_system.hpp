@@ -24,8 +24,11 @@ struct RenderTarget {
 struct PuddleRenderer {
     std::array<LazyPipeline, puddle_variant_count> variants;
     bool surface_unorm = false;
+    std::size_t shown = puddle_variant_count;  // the variant drawn last: kept while a new one builds
 
-    // The pipeline for `v`, compiled now if it is new; null (logged once) when it fails to compile.
+    // The pipeline for `v` once built; until then (a build off the frame thread) the variant drawn last,
+    // so a knob that needs a new variant switches the picture in one frame when it is ready, and the
+    // variant drawn last also when `v` fails to build (logged once). Null when none was ever ready.
     const gpu::Pipeline* pipeline(gpu::Device& device, const PuddleVariant& v);
 };
 

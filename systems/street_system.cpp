@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "systems/param_uniforms.hpp"
-#include "systems/scene_select.hpp"
 #include "systems/shader_hash.hpp"
 #include "systems/shader_phase.hpp"
 
@@ -67,10 +66,13 @@ Result<void> prepare_street(gpu::Device& device, StreetRenderer& street) {
     return street.pass.ensure(device, street_desc);
 }
 
+bool request_street(gpu::Device& device, StreetRenderer& street) {
+    return street.pass.request(device, street_desc);
+}
+
 void street_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                    StreetRenderer& street, const RenderTarget& target) {
-    if (selected_scene(params) != Scene::Street) return;
-    if (!street.pass.ensure_or_log(device, street_desc)) return;
+    if (!street.pass.request(device, street_desc)) return;
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "street", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(street.pass.pipeline);

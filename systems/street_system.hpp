@@ -50,6 +50,8 @@ struct StreetRenderer {
 };
 
 Result<void> prepare_street(gpu::Device& device, StreetRenderer& street);
+// Starts building it off the frame thread (the look switch, systems/look_switch.hpp); true once ready.
+bool request_street(gpu::Device& device, StreetRenderer& street);
 
 void street_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                    StreetRenderer& street, const RenderTarget& target);

@@ -148,7 +148,7 @@ int run(int argc, const char* const* argv) {
     o.display.mode = params->s(ParamId::display_mode);
 
     spdlog::info("puddle {} starting", version());
-    auto engine = Engine::create(*params, o.display, {}, [&tuning](ecs::World& world, ecs::Schedule& schedule) {
+    auto engine = Engine::create(*params, o.display, {.background_compiles = true}, [&tuning](ecs::World& world, ecs::Schedule& schedule) {
         systems::add_live_tuning(world, schedule, std::move(*tuning));
     });
     if (!engine) return fail(engine.error());

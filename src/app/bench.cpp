@@ -50,6 +50,7 @@
 #include "systems/frame_clock.hpp"
 #include "systems/grid_drop_system.hpp"
 #include "systems/render_system.hpp"
+#include "systems/scene_select.hpp"
 #include "systems/surface_system.hpp"
 #include "systems/wave_system.hpp"
 
@@ -369,8 +370,10 @@ void bench_drop_pass(benchmark::State& state, const Look& look) {
     auto& clock = w.resource<systems::FrameClock>();
     auto& surface = w.resource<systems::Surface>();
     measure(state, device, [&] {
-        systems::analytic_ripple_system(device, params, clock, w.resource<systems::AnalyticRipples>(), surface);
-        systems::grid_drop_system(device, params, clock, w.resource<systems::GridDrops>(), surface);
+        if (systems::selected_drop_model(params) == systems::DropModel::Analytic)
+            systems::analytic_ripple_system(device, params, clock, w.resource<systems::AnalyticRipples>(), surface);
+        else if (systems::selected_drop_model(params) == systems::DropModel::Grid)
+            systems::grid_drop_system(device, params, clock, w.resource<systems::GridDrops>(), surface);
     });
     restore_default_look(params);
 }

@@ -21,6 +21,12 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
     auto& device = engine->world_.insert_resource<gpu::Device>(device_options);
     spdlog::info("gpu: {}", device.caps().summary());
     if (auto r = engine->display_->prepare(device); !r) return r.error();
+    if (device_options.background_compiles) {
+        if (auto context = engine->display_->create_worker_context())
+            device.start_background_compiles(std::move(context).value());
+        else
+            spdlog::warn("{}; looks chosen while running compile on the frame thread", context.error().message);
+    }
     engine->world_.insert_resource<params::Params>(params);
     engine->world_.insert_resource<systems::RenderTarget>();
     if (input_plugin) input_plugin(engine->world_, engine->schedule_);

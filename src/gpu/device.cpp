@@ -1,13 +1,14 @@
 #include "gpu/device.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cstring>
 
 #include "gpu/gl.hpp"
 #include "gpu/gl_errors.hpp"
-#include "gpu/shader_source.hpp"
+#include "gpu/program_link.hpp"
 
 namespace puddle::gpu {
 
@@ -24,37 +25,6 @@ GLint gl_wrap(Wrap w) {
         case Wrap::Mirror: return GL_MIRRORED_REPEAT;
     }
     return GL_CLAMP_TO_EDGE;
-}
-
-struct ShaderObject {
-    GLuint id = 0;
-    ~ShaderObject() {
-        if (id) glDeleteShader(id);
-    }
-};
-
-std::string info_log(GLuint object, bool program) {
-    GLint length = 0;
-    program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    program ? glGetProgramInfoLog(object, length, nullptr, log.data())
-            : glGetShaderInfoLog(object, length, nullptr, log.data());
-    log.resize(std::strlen(log.c_str()));
-    return log;
-}
-
-Result<void> compile(GLuint shader, const std::string& file, const PipelineDesc& desc) {
-    auto assembled = assemble_shader(file, desc.defines);
-    if (!assembled) return make_error(ExitCode::Runtime, "gpu: {}: {}", desc.label, assembled.error().message);
-    const char* text = assembled->source.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok)
-        return make_error(ExitCode::Runtime, "gpu: pipeline '{}': {}", desc.label,
-                          map_shader_log(info_log(shader, false), *assembled));
-    return {};
 }
 
 }  // namespace
@@ -140,27 +110,45 @@ Result<Buffer> Device::create_buffer(const BufferDesc& desc) {
 }
 
 Result<Pipeline> Device::create_pipeline(const PipelineDesc& desc) {
-    ShaderObject vs{glCreateShader(GL_VERTEX_SHADER)}, fs{glCreateShader(GL_FRAGMENT_SHADER)};
-    // Zero names: the driver could not make the objects (out of memory, or the context is lost).
-    if (!vs.id || !fs.id)
-        return make_error(ExitCode::Runtime, "gpu: pipeline '{}': glCreateShader: {}", desc.label,
-                          gl_error_name(take_gl_error()));
-    if (auto r = compile(vs.id, desc.vertex, desc); !r) return r.error();
-    if (auto r = compile(fs.id, desc.fragment, desc); !r) return r.error();
+    auto program = link_program(desc);
+    if (!program) return program.error();
+    return adopt_program(desc, std::move(program).value());
+}
+
+void Device::start_background_compiles(std::unique_ptr<WorkerContext> context) {
+    compiler_ = std::make_unique<PipelineCompiler>(std::move(context));
+}
+
+PipelineRequest Device::request_pipeline(PipelineDesc desc) {
+    PipelineRequest request;
+    if (compiler_ && !worker_failed_)
+        request.job = compiler_->submit(std::move(desc));
+    else
+        request.built_now = create_pipeline(desc);
+    return request;
+}
+
+std::optional<Result<Pipeline>> Device::take_pipeline(PipelineRequest& request) {
+    if (request.built_now) return std::exchange(request.built_now, std::nullopt);
+    if (!request.job || !request.job->done.load(std::memory_order_acquire)) return std::nullopt;
+    const std::shared_ptr<CompileJob> job = std::exchange(request.job, nullptr);
+    if (job->worker_unavailable) {
+        if (!worker_failed_)
+            spdlog::warn("{}; building pipelines on the frame thread", job->result->error().message);
+        worker_failed_ = true;
+        return create_pipeline(job->desc);
+    }
+    if (!*job->result) return Result<Pipeline>(job->result->error());
+    return adopt_program(job->desc, std::move(*job->result).value());
+}
+
+Result<Pipeline> Device::adopt_program(const PipelineDesc& desc, GlHandle<detail::delete_program> program) {
     Pipeline p;
     p.label_ = desc.label;
     p.blend_ = desc.blend;
-    p.program_ = GlHandle<detail::delete_program>(glCreateProgram());
+    p.program_ = std::move(program);
     const GLuint prog = p.program_.get();
-    if (!prog)
-        return make_error(ExitCode::Runtime, "gpu: pipeline '{}': glCreateProgram: {}", desc.label,
-                          gl_error_name(take_gl_error()));
-    glAttachShader(prog, vs.id);
-    glAttachShader(prog, fs.id);
-    glLinkProgram(prog);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-    if (!ok) return make_error(ExitCode::Runtime, "gpu: pipeline '{}': link: {}", desc.label, info_log(prog, true));
+    glUseProgram(prog);  // binding it makes a program linked in the worker's context current here
     labels_.label(GL_PROGRAM_KHR, prog, desc.label);
 
     GLint count = 0, max_len = 0;
@@ -179,7 +167,6 @@ Result<Pipeline> Device::create_pipeline(const PipelineDesc& desc) {
         p.names_.push_back(std::move(n));
         p.locations_.push_back(loc);
     }
-    glUseProgram(prog);
     for (std::size_t unit = 0; unit < desc.textures.size(); ++unit)
         glUniform1i(p.location(desc.textures[unit]), static_cast<GLint>(unit));
     for (std::size_t binding = 0; binding < desc.uniform_blocks.size(); ++binding) {

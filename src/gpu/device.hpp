@@ -4,6 +4,8 @@
 // Made once a context is current (by a display backend); lives as a World resource.
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "gpu/frame_target.hpp"
 #include "gpu/handle.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/pipeline_compiler.hpp"
 #include "gpu/render_pass.hpp"
 #include "gpu/texture.hpp"
 #include "util/result.hpp"
@@ -23,11 +26,22 @@ namespace puddle::gpu {
 
 struct DeviceOptions {
     bool forbid_float_targets = false;  // exercise the fixed-point fallbacks on any GPU
+    // Engine: build the pipelines of looks chosen while running on a worker thread (the display's worker
+    // context), as the binary does. Off: at once on the frame thread, so a test or benchmark that sets a
+    // look sees it in the next frame.
+    bool background_compiles = false;
 };
 
 namespace detail {
 void delete_vertex_array(GLuint id);
 }
+
+// A pipeline being built for the frame loop (Device::request_pipeline); empty when none is.
+struct PipelineRequest {
+    std::shared_ptr<CompileJob> job;             // linking on the compiler's worker
+    std::optional<Result<Pipeline>> built_now;   // no worker: built at request time
+    bool active() const { return job || built_now; }
+};
 
 class Device {
 public:
@@ -47,6 +61,16 @@ public:
     Result<Buffer> create_buffer(const BufferDesc& desc);
     // Compile and link errors name the shader file and line: "gpu: wave_step.frag:31: error: ...".
     Result<Pipeline> create_pipeline(const PipelineDesc& desc);
+    // From now on request_pipeline links on a worker thread in `context` (a display's worker context).
+    // Should the worker fail to make it current, take_pipeline logs that once and builds at once.
+    void start_background_compiles(std::unique_ptr<WorkerContext> context);
+    bool compiles_in_background() const { return compiler_ && !worker_failed_; }
+    // For the frame loop: starts building desc without waiting for it (see gpu/pipeline_compiler.hpp);
+    // builds it at once when background compiles were not started.
+    PipelineRequest request_pipeline(PipelineDesc desc);
+    // The requested pipeline, or its error as create_pipeline's, once it is built: the request is then
+    // empty. Nothing while the worker is still on it.
+    std::optional<Result<Pipeline>> take_pipeline(PipelineRequest& request);
     RenderPass begin_pass(const RenderPassDesc& desc);
     // An EGLImage (from a dmabuf or a GL texture) as an External texture (external_image.cpp).
     Result<ExternalImage> create_external_image(const ExternalImageDesc& desc);
@@ -65,6 +89,11 @@ public:
     std::string take_errors();
 
 private:
+    // Reads a linked program's uniforms and binds its samplers and blocks (frame thread).
+    Result<Pipeline> adopt_program(const PipelineDesc& desc, GlHandle<detail::delete_program> program);
+
+    std::unique_ptr<PipelineCompiler> compiler_;  // first: its worker stops before the device's objects die
+    bool worker_failed_ = false;                  // its context could not be made current: build at once
     Capabilities caps_;
     DebugLabels labels_;
     GlHandle<detail::delete_vertex_array> empty_vao_;

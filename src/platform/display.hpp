@@ -57,6 +57,10 @@ public:
         return {};
     }
     bool powered() const { return powered_; }
+    // A context sharing this display's GL objects, for the pipeline compiler's worker thread
+    // (gpu/worker_context.hpp); an error when the platform cannot make one (then shaders compile on the
+    // frame thread, as they must without one).
+    virtual Result<std::unique_ptr<gpu::WorkerContext>> create_worker_context() = 0;
     // One line for the start-up log: device, connector, mode, size.
     virtual std::string describe() const = 0;
 

@@ -177,6 +177,47 @@ Result<void> EglContext::make_current() {
     return {};
 }
 
+namespace {
+
+class SharedEglContext final : public gpu::WorkerContext {
+public:
+    SharedEglContext(EGLDisplay display, EGLContext context) : display_(display), context_(context) {
+        ++display_users()[display_];
+    }
+    ~SharedEglContext() override {
+        eglDestroyContext(display_, context_);
+        if (--display_users()[display_] == 0) {
+            display_users().erase(display_);
+            eglTerminate(display_);
+        }
+    }
+    Result<void> make_current() override {
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            return make_error(ExitCode::Display, "egl: eglMakeCurrent(worker context): {}",
+                              egl_error_name(eglGetError()));
+        return {};
+    }
+    void release() override { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
+
+private:
+    EGLDisplay display_;
+    EGLContext context_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<gpu::WorkerContext>> EglContext::create_worker_context() const {
+    if (!has_extension("EGL_KHR_surfaceless_context"))
+        return make_error(ExitCode::Display, "egl: no EGL_KHR_surfaceless_context for a worker context");
+    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
+    const EGLContext shared =
+        eglCreateContext(display_, config_ ? config_ : EGL_NO_CONFIG_KHR, context_, context_attribs);
+    if (shared == EGL_NO_CONTEXT)
+        return make_error(ExitCode::Display, "egl: cannot create a worker context: {}",
+                          egl_error_name(eglGetError()));
+    return std::unique_ptr<gpu::WorkerContext>(std::make_unique<SharedEglContext>(display_, shared));
+}
+
 bool EglContext::swap_buffers() { return eglSwapBuffers(display_, surface_) == EGL_TRUE; }
 
 bool EglContext::has_extension(std::string_view name) const {

@@ -5,9 +5,11 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <memory>
 #include <string>
 #include <string_view>
 
+#include "gpu/worker_context.hpp"
 #include "util/result.hpp"
 
 namespace puddle::platform {
@@ -42,6 +44,10 @@ public:
     EGLContext context() const { return context_; }
     EGLSurface surface() const { return surface_; }
     bool has_extension(std::string_view name) const;  // display extensions
+    // A context sharing this one's objects, for a worker thread (gpu/worker_context.hpp). Needs
+    // EGL_KHR_surfaceless_context (Mesa has it on every platform); an error says what is missing. Create
+    // and destroy it on this context's thread; only make_current/release run on the worker.
+    Result<std::unique_ptr<gpu::WorkerContext>> create_worker_context() const;
     std::string vendor() const;
 
 private:

@@ -30,6 +30,9 @@ public:
     }
 
     void make_current() override { (void)context_.make_current_surfaceless(); }
+    Result<std::unique_ptr<gpu::WorkerContext>> create_worker_context() override {
+        return context_.create_worker_context();
+    }
     BackendKind kind() const override { return BackendKind::Headless; }
     glm::ivec2 size() const override { return size_; }
     gpu::FrameTarget frame_target() const override { return {&target_, size_}; }

@@ -344,6 +344,9 @@ Result<uint32_t> framebuffer_for(int fd, const std::string& card, gbm_bo* bo) {
 class KmsDisplay final : public Display {
 public:
     void make_current() override { (void)egl_.make_current(); }
+    Result<std::unique_ptr<gpu::WorkerContext>> create_worker_context() override {
+        return egl_.create_worker_context();
+    }
     static Result<std::unique_ptr<Display>> create(const DisplayOptions& options);
 
     ~KmsDisplay() override {

@@ -71,6 +71,9 @@ constexpr glm::ivec2 kDefaultSize{1280, 720};
 class WindowDisplay final : public Display {
 public:
     void make_current() override { (void)egl_.make_current(); }
+    Result<std::unique_ptr<gpu::WorkerContext>> create_worker_context() override {
+        return egl_.create_worker_context();
+    }
     static Result<std::unique_ptr<Display>> create(const DisplayOptions& options);
 
     BackendKind kind() const override { return BackendKind::Window; }

@@ -6,7 +6,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
+#include <thread>
 
 #include "platform/display.hpp"
 
@@ -46,6 +49,83 @@ TEST_F(DeviceTest, CompileErrorNamesTheShaderFileAndLine) {
     ASSERT_FALSE(p.ok());
     EXPECT_NE(p.error().message.find("broken wave"), std::string::npos) << p.error().message;
     EXPECT_NE(p.error().message.find("wave_step.frag:"), std::string::npos) << p.error().message;
+}
+
+// Polls a request the way the frame loop does, for at most 30 s.
+std::optional<Result<Pipeline>> wait_for(Device& device, PipelineRequest& request) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < give_up) {
+        if (auto built = device.take_pipeline(request)) return built;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return std::nullopt;
+}
+
+std::vector<std::uint8_t> draw(Device& device, const Pipeline& pipeline) {
+    Texture t = device.create_texture({.label = "target", .format = TextureFormat::RGBA8, .width = 64, .height = 32})
+                    .value();
+    device.begin_pass({.label = "draw", .target = {&t, {64, 32}}, .load = LoadOp::Clear})
+        .set_pipeline(pipeline)
+        .set("u_aspect", 2.0f)
+        .draw_fullscreen();
+    std::vector<std::uint8_t> rgba(64 * 32 * 4);
+    device.read_pixels({&t, {64, 32}}, rgba);
+    return rgba;
+}
+
+TEST_F(DeviceTest, APipelineLinkedOnTheWorkerDrawsAsOneLinkedHere) {
+    auto context = display_->create_worker_context();
+    ASSERT_TRUE(context.ok()) << context.error().message;
+    device_->start_background_compiles(std::move(context).value());
+    const PipelineDesc desc{.label = "street", .fragment = "street.frag"};
+    PipelineRequest request = device_->request_pipeline(desc);
+    EXPECT_TRUE(request.job) << "queued for the worker, not built on this thread";
+    auto built = wait_for(*device_, request);
+    ASSERT_TRUE(built && built->ok()) << (built ? built->error().message : "still building after 30 s");
+    EXPECT_FALSE(request.active());
+    auto here = device_->create_pipeline(desc);
+    ASSERT_TRUE(here.ok()) << here.error().message;
+    const auto names = (*built)->uniform_names();
+    EXPECT_EQ(std::vector<std::string>(names.begin(), names.end()),
+              std::vector<std::string>(here->uniform_names().begin(), here->uniform_names().end()));
+    const auto worker_pixels = draw(*device_, built->value()), here_pixels = draw(*device_, *here);
+    EXPECT_EQ(worker_pixels, here_pixels);
+    EXPECT_NE(std::count(worker_pixels.begin(), worker_pixels.end(), 0), std::ptrdiff_t(worker_pixels.size()));
+}
+
+TEST_F(DeviceTest, ACompileErrorOnTheWorkerNamesTheShaderFileAndLine) {
+    auto context = display_->create_worker_context();
+    ASSERT_TRUE(context.ok()) << context.error().message;
+    device_->start_background_compiles(std::move(context).value());
+    PipelineRequest request = device_->request_pipeline({.label = "broken wave",
+                                                         .fragment = "wave_step.frag",
+                                                         .defines = {"MAX_DROPS -1"},
+                                                         .textures = {"u_field"},
+                                                         .uniform_blocks = {"Drops"}});
+    auto built = wait_for(*device_, request);
+    ASSERT_TRUE(built.has_value()) << "still building after 30 s";
+    ASSERT_FALSE(built->ok());
+    EXPECT_NE(built->error().message.find("wave_step.frag:"), std::string::npos) << built->error().message;
+}
+
+// A worker context that cannot be made current (a driver without shared surfaceless contexts).
+struct BrokenWorkerContext final : WorkerContext {
+    Result<void> make_current() override {
+        return make_error(ExitCode::Display, "egl: eglMakeCurrent(worker context): EGL_BAD_MATCH");
+    }
+    void release() override {}
+};
+
+TEST_F(DeviceTest, AWorkerThatCannotStartLeavesPipelinesBuiltHere) {
+    device_->start_background_compiles(std::make_unique<BrokenWorkerContext>());
+    PipelineRequest request = device_->request_pipeline({.label = "street", .fragment = "street.frag"});
+    auto built = wait_for(*device_, request);
+    ASSERT_TRUE(built && built->ok()) << (built ? built->error().message : "still building after 30 s");
+    EXPECT_NE((*built)->id(), 0u);
+    EXPECT_FALSE(device_->compiles_in_background());
+    PipelineRequest next = device_->request_pipeline({.label = "street", .fragment = "street.frag"});
+    EXPECT_FALSE(next.job) << "built at once from then on";
+    EXPECT_TRUE(next.built_now && next.built_now->ok());
 }
 
 TEST_F(DeviceTest, ClearPassReadsBackTopRowFirst) {

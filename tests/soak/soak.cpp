@@ -356,7 +356,7 @@ int run(int argc, char** argv) {
     }
     const params::Params initial = tuning->layers.compose();
     auto engine = app::Engine::create(
-        initial, cli_options.display, {},
+        initial, cli_options.display, {.background_compiles = true},
         [&tuning](ecs::World& w, ecs::Schedule& s) { systems::add_live_tuning(w, s, std::move(*tuning)); });
     if (!engine) {
         std::fprintf(stderr, "soak: %s\n", engine.error().message.c_str());

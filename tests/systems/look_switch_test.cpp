@@ -1,0 +1,106 @@
+// A look chosen while the display runs is built off the frame thread (systems/look_switch.hpp,
+// gpu/pipeline_compiler.hpp): frames go on showing the old look while the worker has not built the new
+// one, and the first frame after it is ready shows the new look exactly as an engine started with it.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+
+#include "params/config_loader.hpp"
+#include "support/test_support.hpp"
+#include "systems/ocean_system.hpp"
+#include "systems/render_test_support.hpp"
+#include "systems/scene_select.hpp"
+
+namespace puddle::test {
+namespace {
+
+// The display's worker context, made current only once the test opens the gate: until then the compiler's
+// worker cannot link anything, as if every compile took as long as the test wants.
+class GatedContext final : public gpu::WorkerContext {
+public:
+    explicit GatedContext(std::unique_ptr<gpu::WorkerContext> inner) : inner_(std::move(inner)) {}
+    Result<void> make_current() override {
+        std::unique_lock lock(mutex_);
+        opened_.wait(lock, [this] { return open_; });
+        return inner_->make_current();
+    }
+    void release() override { inner_->release(); }
+    void open() {
+        {
+            std::lock_guard lock(mutex_);
+            open_ = true;
+        }
+        opened_.notify_all();
+    }
+
+private:
+    std::unique_ptr<gpu::WorkerContext> inner_;
+    std::mutex mutex_;
+    std::condition_variable opened_;
+    bool open_ = false;
+};
+
+void set(app::Engine& e, const std::string& assignment) {
+    auto a = params::parse_assignment(assignment);
+    ASSERT_TRUE(a.ok()) << assignment;
+    e.params().set(a->id, a->value, params::ParamSource::CommandLine);
+}
+
+// Runs frames until the engine shows `scene` (at most 20 s of waiting for the worker); the frame count.
+int frames_until_shown(app::Engine& engine, systems::Scene scene) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int frames = 0;
+    while (engine.world().resource<systems::ShownLook>().scene != scene &&
+           std::chrono::steady_clock::now() < give_up) {
+        EXPECT_TRUE(engine.frame(1.0 / 60.0).ok());
+        ++frames;
+    }
+    return frames;
+}
+
+TEST(LookSwitch, ANewSceneIsBuiltOffTheFrameThreadAndShownWhenReady) {
+    auto engine = make_engine(make_params({"wave.resolution=256", "rain.seed=11"}), render_test_size);
+    ASSERT_TRUE(engine);
+    auto context = engine->display().create_worker_context();
+    ASSERT_TRUE(context.ok()) << context.error().message;
+    auto gated = std::make_unique<GatedContext>(std::move(context).value());
+    GatedContext& gate = *gated;
+    engine->device().start_background_compiles(std::move(gated));
+
+    const auto before = render_frames(*engine, 5);
+    set(*engine, "scene.kind=ocean");
+    // The worker is held: frames go on, showing the puddle. With the compile on the frame thread the first
+    // of these frames would have waited for it and shown the ocean.
+    const auto while_building = render_frames(*engine, 3);
+    EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::Puddle);
+    EXPECT_LT(compare_images(before, while_building, 32).fraction_over, 0.2) << "still the puddle";
+
+    gate.open();
+    const int more = frames_until_shown(*engine, systems::Scene::Ocean);
+    ASSERT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::Ocean);
+    const auto ocean = render_frames(*engine, 1);  // frame 5 + 3 + more + 1
+    // The ocean is a function of time: an engine started with it, at the same frame, draws the same.
+    const auto ocean_fresh = render_with({"scene.kind=ocean"}, 5 + 3 + more + 1);
+    EXPECT_LT(compare_images(ocean, ocean_fresh, 8).fraction_over, 0.001);
+    EXPECT_GT(compare_images(while_building, ocean, 8).fraction_over, 0.5);
+}
+
+TEST(LookSwitch, ALookThatFailsToBuildIsNeverShown) {
+    auto engine = make_engine(make_params({"wave.resolution=256", "rain.seed=11"}), render_test_size);
+    ASSERT_TRUE(engine);
+    auto context = engine->display().create_worker_context();
+    ASSERT_TRUE(context.ok()) << context.error().message;
+    engine->device().start_background_compiles(std::move(context).value());
+    // As if ocean.frag had not compiled on this GPU: the pipeline is marked failed.
+    engine->world().resource<systems::OceanRenderer>().pass.failed = true;
+    const auto before = render_frames(*engine, 3);
+    set(*engine, "scene.kind=ocean");
+    const auto after = render_frames(*engine, 10);
+    EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::Puddle);
+    EXPECT_LT(compare_images(before, after, 32).fraction_over, 0.2) << "the puddle stays, not a black frame";
+}
+
+}  // namespace
+}  // namespace puddle::test
