@@ -56,6 +56,12 @@ public:
         return finished_ != submitted_ || result_.has_value();
     }
 
+    // True from a submission until it has returned (its result may then wait to be taken).
+    bool running() const {
+        std::lock_guard lock(mutex_);
+        return finished_ != submitted_;
+    }
+
 private:
     void run(std::stop_token thread_stop) {
         std::unique_lock lock(mutex_);

@@ -42,6 +42,23 @@ TEST(BackgroundJob, RunsOffTheCallingThreadAndHandsTheResultOverOnce) {
     EXPECT_FALSE(job.take()) << "a result is handed over once";
 }
 
+TEST(BackgroundJob, RunningEndsWhenTheJobReturnsAndBusyWhenItsResultIsTaken) {
+    BackgroundJob<int> job;
+    EXPECT_FALSE(job.running());
+    std::atomic<bool> go{false};
+    job.submit([&](std::stop_token) {
+        while (!go) std::this_thread::sleep_for(1ms);
+        return 7;
+    });
+    EXPECT_TRUE(job.running());
+    go = true;
+    for (int i = 0; i < 10000 && job.running(); ++i) std::this_thread::sleep_for(1ms);
+    EXPECT_FALSE(job.running());
+    EXPECT_TRUE(job.busy()) << "the result waits to be taken";
+    EXPECT_EQ(job.take(), 7);
+    EXPECT_FALSE(job.busy());
+}
+
 TEST(BackgroundJob, TheNewestSubmissionWinsAndTheOlderOneIsAskedToStop) {
     BackgroundJob<int> job;
     std::atomic<bool> started{false}, saw_stop{false};
