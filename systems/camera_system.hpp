@@ -58,8 +58,9 @@ struct CameraFeed {
 
     // Opens and closes sources off the frame thread. Last member: destroyed first, it asks the job in
     // flight to stop and joins the worker. What bounds that wait: a mock folder stops decoding between
-    // two images; a V4L2 call returns when its driver gives up (uvcvideo on a USB control transfer after
-    // 5 s), and past that systemd's stop timeout ends the process.
+    // two images; a V4L2 call returns when its driver gives up (uvcvideo: each USB streaming control
+    // transfer after 5 s, UVC_CTRL_STREAMING_TIMEOUT, and an open makes a few); past that, systemd's
+    // stop timeout ends the process.
     BackgroundJob<CameraOpening> worker;
 };
 
