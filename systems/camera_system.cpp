@@ -21,16 +21,40 @@ bool wants_camera(const params::Params& params) {
     return params.s(ParamId::environment_source) == "camera";
 }
 
-void close_feed(CameraFeed& feed, CameraEnvironment& env) {
-    drop_camera_frames(env);
-    feed.closed_faults = feed.faults();
-    feed.source.reset();
+// The worker's job: close `closing` (STREAMOFF, munmap, close: before the open, which may need the
+// same device), then open `request`. Only submitted while the worker is idle (see the header), so a
+// job is never dropped unrun and a source is never closed on the frame thread.
+void start_job(CameraFeed& feed, std::unique_ptr<camera::CameraSource> closing,
+               std::optional<camera::CaptureRequest> request) {
+    // shared_ptr only because std::function wants a copyable callable; the job holds the one reference.
+    feed.worker.submit([io = feed.io, old = std::shared_ptr<camera::CameraSource>(std::move(closing)),
+                        request = std::move(request)](std::stop_token stop) mutable {
+        old.reset();
+        if (!request) return CameraOpening{};
+        auto opened = camera::open_camera_source(*io, *request, std::move(stop));
+        return CameraOpening{.request = std::move(*request), .opened = std::move(opened)};
+    });
 }
 
-// One attempt; a failure is logged once per distinct message and retried later.
-void try_open(CameraFeed& feed, const camera::CaptureRequest& request) {
+// The source leaves the frame thread (the reflection goes back to the cubemap first, as its frames
+// may be the driver's buffers); `reopen` names what to open once it is closed.
+void close_feed(CameraFeed& feed, CameraEnvironment& env,
+                std::optional<camera::CaptureRequest> reopen = std::nullopt) {
+    drop_camera_frames(env);
+    feed.closed_faults = feed.faults();
+    start_job(feed, std::move(feed.source), std::move(reopen));
+}
+
+// One attempt, on the worker; retried `camera_retry_seconds` after it began if it fails.
+void start_open(CameraFeed& feed, camera::CaptureRequest request) {
     feed.retry_at = feed.now + camera_retry_seconds;
-    auto opened = camera::open_camera_source(*feed.io, request);
+    start_job(feed, nullptr, std::move(request));
+}
+
+// The worker's answer: a source to stream, or a failure logged once per distinct message.
+void collect(CameraFeed& feed, CameraOpening done) {
+    if (!done.opened) return;  // a close only
+    auto& opened = *done.opened;
     if (!opened) {
         if (opened.error().message != feed.last_failure)
             spdlog::warn("{}; reflecting the cubemap, retrying every {:g} s", opened.error().message,
@@ -41,7 +65,7 @@ void try_open(CameraFeed& feed, const camera::CaptureRequest& request) {
         return;
     }
     feed.source = std::move(opened).value();
-    feed.request = request;
+    feed.request = std::move(done.request);
     feed.last_failure.clear();
     spdlog::info("camera: streaming {}", feed.source->describe());
 }
@@ -68,28 +92,31 @@ Result<void> open_camera_feed(CameraFeed& feed, const params::Params& params) {
         spdlog::info("camera: streaming {}", feed.source->describe());
         return {};
     }
-    try_open(feed, request);
+    start_open(feed, request);
     return {};
 }
 
 void camera_feed_system(CameraFeed& feed, const params::Params& params, const FrameClock& clock,
                         gpu::Device& device, CameraEnvironment& env) {
     feed.now += clock.frame_dt;
+    if (auto done = feed.worker.take()) collect(feed, std::move(*done));
+    if (feed.worker.busy()) return;  // an open or close in flight: the cubemap meanwhile
     if (!wants_camera(params)) {
-        if (feed.source)
+        if (feed.source) {
             spdlog::info("camera: environment.source = cubemap; closing {}", feed.request.device);
-        close_feed(feed, env);
+            close_feed(feed, env);
+        }
         return;
     }
     if (feed.source && !still_requested(params, feed.request)) {
         spdlog::info("camera: settings changed; reopening {}", params.s(ParamId::environment_camera_device));
-        close_feed(feed, env);
-        feed.retry_at = feed.now;
+        close_feed(feed, env, camera_request(params));
+        feed.retry_at = feed.now + camera_retry_seconds;
+        return;
     }
     if (!feed.source) {
-        if (feed.now < feed.retry_at) return;
-        try_open(feed, camera_request(params));
-        if (!feed.source) return;
+        if (feed.now >= feed.retry_at) start_open(feed, camera_request(params));
+        return;
     }
     auto polled = feed.source->poll(feed.now);
     if (!polled) {

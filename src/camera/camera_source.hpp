@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stop_token>
 #include <string>
 
 #include "camera/camera_image.hpp"
@@ -38,9 +39,14 @@ public:
 // and logged at most once a minute each (FaultTally), with poll's `now` as the clock.
 Result<std::unique_ptr<CameraSource>> open_v4l2_source(V4l2Io& io, const CaptureRequest& request);
 // "mock:PATH": an image, or a folder of images played in a loop at `fps` (name order). Errors exit 3.
-Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps);
+// A stop requested through `stop` ends the decoding between two images, with an error.
+Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps,
+                                                       std::stop_token stop = {});
 
-// request.device "mock:PATH" opens the mock, anything else a V4L2 device through io.
-Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request);
+// request.device "mock:PATH" opens the mock, anything else a V4L2 device through io. Blocks: a UVC
+// camera's VIDIOC_S_FMT or VIDIOC_STREAMON can take seconds, a mock folder as long to decode, so the
+// frame loop calls this on a worker thread (systems/camera_system.hpp); `stop` reaches the mock's decoding.
+Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request,
+                                                         std::stop_token stop = {});
 
 }  // namespace puddle::camera

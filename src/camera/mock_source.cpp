@@ -62,7 +62,8 @@ private:
 
 }  // namespace
 
-Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps) {
+Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps,
+                                                       std::stop_token stop) {
     namespace fs = std::filesystem;
     std::vector<std::string> files;
     std::error_code ec;
@@ -84,6 +85,8 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
     std::vector<assets::Image> frames;
     std::size_t bytes = 0;
     for (const std::string& file : files) {
+        if (stop.stop_requested())  // shutting down: one image's decode is the longest wait
+            return make_error(ExitCode::Runtime, "camera: mock:{}: opening stopped before {}", path, file);
         auto image = assets::read_image(file);
         if (!image) return make_error(ExitCode::Asset, "camera: mock: {}", image.error().message);
         if (!frames.empty() && (image->width != frames[0].width || image->height != frames[0].height))

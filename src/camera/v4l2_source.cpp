@@ -85,10 +85,11 @@ Result<std::unique_ptr<CameraSource>> open_v4l2_source(V4l2Io& io, const Capture
         std::make_unique<V4l2Source>(std::move(capture).value(), request.device));
 }
 
-Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request) {
+Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request,
+                                                         std::stop_token stop) {
     constexpr std::string_view mock = "mock:";
     if (request.device.starts_with(mock))
-        return open_mock_source(request.device.substr(mock.size()), request.fps);
+        return open_mock_source(request.device.substr(mock.size()), request.fps, std::move(stop));
     return open_v4l2_source(io, request);
 }
 

@@ -4,8 +4,14 @@
 // stop (through its stop_token, checked between its steps), replaces a job still waiting, and only the
 // newest job's result is ever handed back. The thread starts with the first submission, so a run that
 // never submits has none; destruction asks the running job to stop and waits for it to return.
+// The worker blocks every signal, as Mesa's threads do: SIGTERM, SIGINT and SIGHUP are for the frame
+// loop's signalfd (app/signals.hpp), and one delivered to a worker that does not block it would take
+// its default action and end the process.
+
+#include <pthread.h>
 
 #include <condition_variable>
+#include <csignal>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -40,7 +46,13 @@ public:
         pending_ = std::move(work);
         result_.reset();
         job_stop_.request_stop();
-        if (!worker_.joinable()) worker_ = std::jthread([this](std::stop_token stop) { run(stop); });
+        if (!worker_.joinable()) {
+            sigset_t all, previous;  // the new thread inherits this thread's mask, with no gap
+            sigfillset(&all);
+            pthread_sigmask(SIG_BLOCK, &all, &previous);
+            worker_ = std::jthread([this](std::stop_token stop) { run(stop); });
+            pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+        }
         waiting_.notify_one();
     }
 
@@ -54,6 +66,12 @@ public:
     bool busy() const {
         std::lock_guard lock(mutex_);
         return finished_ != submitted_ || result_.has_value();
+    }
+
+    // True from a submission until it has returned (its result may then wait to be taken).
+    bool running() const {
+        std::lock_guard lock(mutex_);
+        return finished_ != submitted_;
     }
 
 private:

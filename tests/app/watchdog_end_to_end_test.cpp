@@ -2,6 +2,7 @@
 // an edit of its config, at a panorama large enough that reading and converting it takes seconds. The
 // frames, and so the WATCHDOG=1 pings, must go on meanwhile (issue 15, fault 6: the old code held one
 // frame for the whole load, 12 to 17 s for an 8192x4096 sky, and systemd would have restarted it).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/socket.h>
 #include <sys/un.h>
@@ -162,6 +163,55 @@ TEST(WatchdogEndToEnd, ALiveEditToALargeSkyKeepsThePingsWithinHalfTheWatchdogPer
         }
     EXPECT_GT(g, 1.5 * r) << "mean green " << g << ", red " << r;
     EXPECT_GT(g, 1.5 * b) << "mean green " << g << ", blue " << b;
+}
+
+// The same for the camera (issue 15, fault 6: "camera opening"): a live edit switches the reflection to
+// a mock camera folder of large images, which takes a second or more to decode. The old code decoded it
+// inside one frame; now the worker does, and the pings go on.
+TEST(WatchdogEndToEnd, ALiveSwitchToALargeMockCameraKeepsThePingsWithinHalfTheWatchdogPeriod) {
+    TempDir dir;
+    // 32 noisy 1920x1080 frames, 253 MiB decoded (the mock's limit is 256 MiB): one encoded, the others
+    // hard links to it, so writing them is quick and takes one file's space, and reading them is not.
+    const auto folder = dir / "camera";
+    std::filesystem::create_directory(folder);
+    {
+        assets::Image frame = assets::Image::make(1920, 1080);
+        std::uint32_t noise = 12345;
+        for (std::uint8_t& byte : frame.data)
+            byte = static_cast<std::uint8_t>((noise = noise * 1664525u + 1013904223u) >> 24);
+        ASSERT_TRUE(assets::write_png((folder / "00.png").string(), frame));
+        for (int i = 1; i < 32; ++i)
+            std::filesystem::create_hard_link(folder / "00.png", folder / fmt::format("{:02}.png", i));
+    }
+    const std::string config = dir.write("puddle.toml", "[rain]\nintensity = 0\n");
+    NotifySocket systemd((dir / "notify").string());
+    ASSERT_TRUE(systemd.ok());
+    constexpr double watchdog_seconds = 2.0;
+    Running puddle({"-b", "headless", "--size", "160x90", "--frames", "0", "--config", config},
+                   dir / "log.txt", {"NOTIFY_SOCKET=" + systemd.path(), "WATCHDOG_USEC=2000000"});
+    ASSERT_TRUE(wait_until(puddle, 120, [&] { return systemd.count("READY=1") == 1; })) << puddle.log();
+
+    std::filesystem::rename(dir.write("puddle.toml.new",
+                                      "[rain]\nintensity = 0\n[environment]\nsource = \"camera\"\n"
+                                      "camera_device = \"mock:" +
+                                          folder.string() + "\"\n"),
+                            config);
+    const std::string streaming = "camera: streaming mock:" + folder.string() + ": 32 image(s) of 1920x1080";
+    ASSERT_TRUE(wait_until(puddle, 120, [&] { return puddle.log().find(streaming) != std::string::npos; }))
+        << puddle.log();
+    const int pings = systemd.count("WATCHDOG=1");
+    ASSERT_TRUE(wait_until(puddle, 60, [&] { return systemd.count("WATCHDOG=1") >= pings + 2; }))
+        << puddle.log();
+    ASSERT_EQ(puddle.stop(), 0) << puddle.log();
+
+    const auto messages = systemd.received();
+    double longest = 0;
+    for (std::size_t i = 1; i < messages.size(); ++i)
+        if (messages[i].text == "WATCHDOG=1")
+            longest =
+                std::max(longest, std::chrono::duration<double>(messages[i].at - messages[i - 1].at).count());
+    RecordProperty("longest_gap_ms", static_cast<int>(longest * 1000));
+    EXPECT_LT(longest, watchdog_seconds / 2) << "the longest gap between pings, in seconds\n" << puddle.log();
 }
 
 }  // namespace

@@ -18,11 +18,27 @@ int FakeV4l2Device::fail(int err) {
 }
 
 int FakeV4l2Device::queued_buffers() const {
+    std::lock_guard lock(sync_->mutex);
     return static_cast<int>(
         std::count_if(buffers_.begin(), buffers_.end(), [](const Buffer& b) { return b.queued; }));
 }
 
+void FakeV4l2Device::hold(unsigned long request, std::chrono::milliseconds limit) {
+    std::lock_guard lock(sync_->mutex);
+    held_ = request;
+    hold_limit_ = limit;
+}
+
+void FakeV4l2Device::release() {
+    {
+        std::lock_guard lock(sync_->mutex);
+        held_.reset();
+    }
+    sync_->released.notify_all();
+}
+
 int FakeV4l2Device::open(const char* p, int) {
+    std::lock_guard lock(sync_->mutex);
     if (!present_ || path != p) return fail(ENOENT);
     ++opens_;
     const int fd = next_fd_++;
@@ -31,6 +47,7 @@ int FakeV4l2Device::open(const char* p, int) {
 }
 
 int FakeV4l2Device::close(int fd) {
+    std::lock_guard lock(sync_->mutex);
     if (!fds_.erase(fd)) return fail(EBADF);
     if (fds_.empty()) {  // the last user gone: a driver frees its queue
         streaming_ = false;
@@ -58,10 +75,18 @@ void FakeV4l2Device::deliver() {
 }
 
 int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
+    std::unique_lock lock(sync_->mutex);
     if (!fds_.count(fd)) return fail(EBADF);
     if (eintr_every > 0 && ++calls_ % eintr_every == 0) {
         ++eintrs_;
         return fail(EINTR);
+    }
+    if (held_ == request) {
+        ++held_calls_;
+        if (!sync_->released.wait_for(lock, hold_limit_, [&] { return held_ != request; }))
+            held_.reset();  // waited long enough: the caller was never going to release it
+        --held_calls_;
+        if (!fds_.count(fd)) return fail(EBADF);
     }
     if (!present_) return fail(ENODEV);
     switch (request) {
@@ -199,6 +224,7 @@ int FakeV4l2Device::ioctl(int fd, unsigned long request, void* arg) {
 }
 
 void* FakeV4l2Device::mmap(std::size_t length, int, int, int fd, off_t offset) {
+    std::lock_guard lock(sync_->mutex);
     if (!fds_.count(fd)) return (errno = EBADF, MAP_FAILED);
     if (!present_) return (errno = ENODEV, MAP_FAILED);
     const auto index = static_cast<std::size_t>(offset / 0x100000);
@@ -210,6 +236,7 @@ void* FakeV4l2Device::mmap(std::size_t length, int, int, int fd, off_t offset) {
 }
 
 int FakeV4l2Device::munmap(void* address, std::size_t length) {
+    std::lock_guard lock(sync_->mutex);
     auto it = mappings_.find(address);
     if (it == mappings_.end() || it->second != length) return fail(EINVAL);
     mappings_.erase(it);
@@ -217,6 +244,7 @@ int FakeV4l2Device::munmap(void* address, std::size_t length) {
 }
 
 int FakeV4l2Device::poll(pollfd* fds, nfds_t count, int) {
+    std::lock_guard lock(sync_->mutex);
     int ready = 0;
     for (nfds_t i = 0; i < count; ++i) {
         fds[i].revents = 0;

@@ -6,13 +6,23 @@
 // (ENODEV, POLLERR) and come back, and fails chosen calls with a chosen errno or poll event (EIO from
 // VIDIOC_DQBUF after a USB hiccup, ENXIO, POLLHUP) once, a few times or until told otherwise. It
 // counts descriptors and mappings, so tests can prove that nothing leaks. Sizes follow the kernel's
-// v4l2_fill_pixfmt(): subsampled chroma rounds odd sizes up.
+// v4l2_fill_pixfmt(): subsampled chroma rounds odd sizes up. It can also hold a chosen ioctl until the
+// test lets it go, as a UVC camera's VIDIOC_S_FMT or VIDIOC_STREAMON can block for seconds.
+// Thread-safe, as a driver is: the camera system opens and closes on a worker thread while the test
+// thread pushes frames and reads the counters. The settings above "Driving it" are set before the
+// first open and not changed while a call may run.
 
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <set>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -41,29 +51,47 @@ public:
     int eintr_every = 3;          // every Nth ioctl is interrupted once (0: never)
 
     // Driving it.
-    void push_frame(FakeFrame frame) { pending_.push_back(std::move(frame)); }
-    void unplug() { present_ = false; }
-    void replug() { present_ = true; }
+    void push_frame(FakeFrame frame) {
+        const auto lock = guard();
+        pending_.push_back(std::move(frame));
+    }
+    void unplug() { write(present_, false); }
+    void replug() { write(present_, true); }
     // The next `times` calls (-1: every call until set again) fail with `err`; VIDIOC_DQBUF fails although
     // poll said POLLIN, and the frame stays ready. err 0 ends a failure.
-    void fail_dqbuf(int err, int times = 1) { dqbuf_failure_ = {err, times}; }
-    void fail_qbuf(int err, int times = 1) { qbuf_failure_ = {err, times}; }
+    void fail_dqbuf(int err, int times = 1) { write(dqbuf_failure_, {err, times}); }
+    void fail_qbuf(int err, int times = 1) { write(qbuf_failure_, {err, times}); }
     // The next `times` polls report `revents` (POLLERR, POLLHUP) although the device is present.
-    void poll_reports(short revents, int times = 1) { poll_event_ = {revents, times}; }
+    void poll_reports(short revents, int times = 1) { write(poll_event_, {revents, times}); }
+    // From now on each `request` (VIDIOC_STREAMON, ...) waits inside the call until release(). A call
+    // that has waited `limit` goes on as usual and ends the hold, so a test of code that makes the call
+    // on the test's own thread fails instead of hanging.
+    void hold(unsigned long request, std::chrono::milliseconds limit = std::chrono::seconds(10));
+    void release();
 
     // Checking it.
-    int open_fds() const { return static_cast<int>(fds_.size()); }
-    int live_mappings() const { return static_cast<int>(mappings_.size()); }
-    int opens() const { return opens_; }
+    int open_fds() const {
+        const auto lock = guard();
+        return static_cast<int>(fds_.size());
+    }
+    int live_mappings() const {
+        const auto lock = guard();
+        return static_cast<int>(mappings_.size());
+    }
+    int opens() const { return read(opens_); }
     int queued_buffers() const;
-    int eintr_count() const { return eintrs_; }
-    bool streaming() const { return streaming_; }
-    int granted_buffers() const { return static_cast<int>(buffers_.size()); }
-    std::uint32_t negotiated_fourcc() const { return fourcc_; }
-    int negotiated_width() const { return width_; }
-    int negotiated_height() const { return height_; }
-    int bytes_per_line() const { return stride_; }
-    int size_image() const { return size_image_; }
+    int eintr_count() const { return read(eintrs_); }
+    bool streaming() const { return read(streaming_); }
+    int granted_buffers() const {
+        const auto lock = guard();
+        return static_cast<int>(buffers_.size());
+    }
+    std::uint32_t negotiated_fourcc() const { return read(fourcc_); }
+    int negotiated_width() const { return read(width_); }
+    int negotiated_height() const { return read(height_); }
+    int bytes_per_line() const { return read(stride_); }
+    int size_image() const { return read(size_image_); }
+    int held_calls() const { return read(held_calls_); }  // waiting in hold() now
 
     int open(const char* path, int flags) override;
     int close(int fd) override;
@@ -90,8 +118,27 @@ private:
             return true;
         }
     };
+    struct Sync {  // behind a pointer, so the device stays movable
+        std::mutex mutex;
+        std::condition_variable released;
+    };
+    std::unique_lock<std::mutex> guard() const { return std::unique_lock(sync_->mutex); }
+    template <class T>
+    T read(const T& field) const {
+        const auto lock = guard();
+        return field;
+    }
+    template <class T>
+    void write(T& field, std::type_identity_t<T> value) {
+        const auto lock = guard();
+        field = std::move(value);
+    }
     int fail(int err);
     void deliver();  // moves pending frames into queued buffers
+    std::unique_ptr<Sync> sync_ = std::make_unique<Sync>();
+    std::optional<unsigned long> held_;  // the ioctl that waits
+    std::chrono::milliseconds hold_limit_{0};
+    int held_calls_ = 0;
     bool present_ = true;
     int next_fd_ = 100;
     std::set<int> fds_;

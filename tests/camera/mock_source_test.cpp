@@ -49,6 +49,21 @@ TEST(MockSource, AFolderOfTooManyImagesIsRefusedBeforeDecodingAny) {
                                        ": the folder holds more than 256 images; the limit is 256");
 }
 
+// Shutdown while a mock folder is decoded on the camera worker: the decoding stops between two images.
+TEST(MockSource, AStopRequestEndsTheDecodingBeforeTheNextImage) {
+    TempDir dir;
+    write_solid((dir / "a.png").string(), 10);
+    write_solid((dir / "b.png").string(), 20);
+    FakeV4l2Device unused;
+    std::stop_source stop;
+    stop.request_stop();
+    auto src =
+        camera::open_camera_source(unused, {.device = "mock:" + dir.path().string()}, stop.get_token());
+    ASSERT_FALSE(src);
+    EXPECT_EQ(src.error().message,
+              "camera: mock:" + dir.path().string() + ": opening stopped before " + (dir / "a.png").string());
+}
+
 TEST(MockSource, RenamedFolderIsAnUnplugAndComesBackWhenReopened) {
     TempDir dir;
     const auto folder = dir / "camera", away = dir / "camera-unplugged";

@@ -1,10 +1,13 @@
 // The camera feed inside the running engine, against the fake V4L2 device: no device at start, a
-// device that appears, vanishes mid-stream and comes back. The display never stops, the puddle
-// reflects the cubemap while no camera streams, and nothing leaks.
+// device that appears, vanishes mid-stream and comes back, one whose open or close blocks. The display
+// never stops, the puddle reflects the cubemap while no camera streams, and nothing leaks.
 #include "systems/camera_system.hpp"
 
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>
+
+#include <chrono>
+#include <thread>
 
 #include "camera/fake_v4l2_device.hpp"
 #include "support/gpu_fixture.hpp"
@@ -15,13 +18,32 @@ namespace {
 
 constexpr const char* fake_path = "/dev/puddle-test-camera";  // never a real device
 
+// Whether `done` holds within `seconds` of wall-clock time (the camera worker runs beside the test).
+template <class Done>
+bool wait_for(Done done, double seconds = 10.0) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > end) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return true;
+}
+
 struct Rig {
     FakeV4l2Device dev;  // outlives the engine, whose feed closes through it
     std::unique_ptr<app::Engine> engine;
+    ~Rig() { dev.release(); }  // a held call must not keep the engine's worker from being joined
     systems::CameraFeed& feed() { return engine->world().resource<systems::CameraFeed>(); }
     const systems::CameraEnvironment& env() { return engine->world().resource<systems::CameraEnvironment>(); }
-    // One frame; while streaming, the camera delivers a white YUYV frame each display frame.
+    // One frame, after the camera worker has finished what the last frame gave it (bounded), so a frame
+    // count measures the feed as a synchronous open would have.
     void frame() {
+        EXPECT_TRUE(wait_for([&] { return !feed().worker.running(); })) << "the camera worker is stuck";
+        step();
+    }
+    // One frame, whatever the worker is doing; while streaming, the camera delivers a white YUYV frame
+    // each display frame.
+    void step() {
         if (dev.streaming()) {
             std::vector<std::byte> f(static_cast<std::size_t>(dev.size_image()), std::byte{128});
             for (std::size_t i = 0; i < f.size(); i += 2) f[i] = std::byte{235};
@@ -39,7 +61,26 @@ struct Rig {
         }
         return -1.0;
     }
+    // Frames (stepped, not waiting for the worker) until a call waits in the device's hold, once the
+    // device has been opened; false if none does within `limit` seconds of frames. A frame that makes the
+    // held call on its own thread returns only when the hold gives up, and the call is then no longer
+    // waiting.
+    bool step_until_held(double limit) {
+        for (int n = 0; n * (1.0 / 30.0) <= limit; ++n) {
+            step();
+            if (dev.opens() > 0 && wait_for([&] { return dev.held_calls() > 0; }, 0.2)) return true;
+        }
+        return false;
+    }
 };
+
+std::unique_ptr<app::Engine> engine_on_the_fake(const char* width = "64", const char* height = "36") {
+    return make_engine(
+        make_params({"environment.source=camera", std::string("environment.camera_device=") + fake_path,
+                     std::string("environment.camera_width=") + width,
+                     std::string("environment.camera_height=") + height}),
+        {96, 54});
+}
 
 TEST(CameraFeed, FallsBackToTheCubemapAndRecoversByItself) {
     Rig rig;
@@ -199,7 +240,10 @@ TEST(CameraFeed, ACorruptMjpegFrameKeepsThePreviousReflection) {
         {96, 54});
     ASSERT_TRUE(rig.engine);
     rig.feed().io = &rig.dev;
-    auto frame = [&] { ASSERT_TRUE(rig.engine->frame(1.0 / 30.0)); };
+    auto frame = [&] {
+        ASSERT_TRUE(wait_for([&] { return !rig.feed().worker.running(); }));
+        ASSERT_TRUE(rig.engine->frame(1.0 / 30.0));
+    };
     for (int i = 0; i < 40 && !rig.feed().streaming(); ++i) frame();
     ASSERT_TRUE(rig.feed().streaming());
     rig.dev.push_frame({encode_jpeg(64, 48, 230, 200, 60)});
@@ -220,6 +264,121 @@ TEST(CameraFeed, ACorruptMjpegFrameKeepsThePreviousReflection) {
     rig.dev.push_frame({dark});
     frame();
     EXPECT_NE(rig.engine->device().read_texture(rig.env().colour), shown);
+}
+
+// Issue 15, fault 6: a UVC camera's VIDIOC_STREAMON can block for seconds. The open waits on the
+// worker; every frame meanwhile returns and reflects the cubemap; the camera streams once it returns.
+TEST(CameraFeed, AnOpenThatBlocksNeverHoldsUpTheFrames) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.dev.max_buffers = 3;
+    rig.dev.hold(VIDIOC_STREAMON);
+    rig.engine = engine_on_the_fake();
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    const assets::Image cubemap = rig.engine->read_frame();
+
+    // The retry timer starts the open within a second; it then waits in VIDIOC_STREAMON.
+    ASSERT_TRUE(rig.step_until_held(1.5)) << "the open did not wait off the frame thread";
+    int frames_while_held = 0;
+    for (int i = 0; i < 20; ++i) {
+        rig.step();
+        if (rig.dev.held_calls() == 1) ++frames_while_held;
+    }
+    EXPECT_EQ(frames_while_held, 20);
+    EXPECT_FALSE(rig.feed().streaming());
+    EXPECT_EQ(rig.env().reflection(), nullptr);
+    EXPECT_EQ(rig.dev.opens(), 1) << "no second open while the first is in flight";
+
+    // Released: the camera streams, and the puddle reflects its white room.
+    rig.dev.release();
+    EXPECT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 0.5), 0.0);
+    for (int i = 0; i < 3; ++i) rig.frame();
+    EXPECT_TRUE(rig.feed().streaming());
+    EXPECT_GT(rig.feed().frames, 0u);
+    EXPECT_GT(mean_luma(rig.engine->read_frame()), mean_luma(cubemap) + 20);
+    EXPECT_EQ(rig.dev.opens(), 1);
+    EXPECT_EQ(rig.dev.live_mappings(), 3);
+}
+
+// New settings while the open for the old ones waits: the old source is closed unpolled and the
+// one left streaming has the new size.
+TEST(CameraFeed, SettingsChangedWhileAnOpenWaitsEndWithTheNewSettings) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}, {32, 18}}}};
+    rig.dev.max_buffers = 3;
+    rig.dev.hold(VIDIOC_S_FMT);
+    rig.engine = engine_on_the_fake();
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_TRUE(rig.step_until_held(1.5)) << "the open did not wait off the frame thread";
+
+    rig.engine->params().set(params::ParamId::environment_camera_width, 32, params::ParamSource::CommandLine);
+    rig.engine->params().set(params::ParamId::environment_camera_height, 18,
+                             params::ParamSource::CommandLine);
+    for (int i = 0; i < 5; ++i) rig.step();
+    EXPECT_EQ(rig.dev.held_calls(), 1);
+    rig.dev.release();
+
+    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 0.5), 0.0);
+    EXPECT_EQ(rig.feed().request.width, 32);
+    EXPECT_EQ(rig.feed().request.height, 18);
+    EXPECT_EQ(rig.dev.negotiated_width(), 32);
+    EXPECT_EQ(rig.dev.negotiated_height(), 18);
+    EXPECT_EQ(rig.dev.opens(), 2) << "opened for 64x36, closed, reopened for 32x18";
+    EXPECT_EQ(rig.dev.open_fds(), 1);
+    EXPECT_EQ(rig.dev.live_mappings(), 3);
+}
+
+// source = cubemap while the open waits: the source it returns is closed, never streamed.
+TEST(CameraFeed, SourceCubemapWhileAnOpenWaitsClosesWhatItOpens) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.dev.hold(VIDIOC_STREAMON);
+    rig.engine = engine_on_the_fake();
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_TRUE(rig.step_until_held(1.5)) << "the open did not wait off the frame thread";
+    rig.engine->params().set(params::ParamId::environment_source, std::string("cubemap"),
+                             params::ParamSource::CommandLine);
+    rig.step();
+    rig.dev.release();
+    for (int i = 0; i < 3; ++i) rig.frame();
+    EXPECT_FALSE(rig.feed().streaming());
+    EXPECT_EQ(rig.env().reflection(), nullptr);
+    EXPECT_EQ(rig.dev.open_fds(), 0);
+    EXPECT_EQ(rig.dev.live_mappings(), 0);
+    EXPECT_EQ(rig.feed().frames, 0u);
+}
+
+// Closing blocks too (VIDIOC_STREAMOFF on a wedged camera): it waits on the worker, not in a frame.
+TEST(CameraFeed, ACloseThatBlocksNeverHoldsUpTheFrames) {
+    Rig rig;
+    rig.dev.path = fake_path;
+    rig.dev.formats = {{V4L2_PIX_FMT_YUYV, {{64, 36}}}};
+    rig.engine = engine_on_the_fake();
+    ASSERT_TRUE(rig.engine);
+    rig.feed().io = &rig.dev;
+    ASSERT_GE(rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5), 0.0);
+
+    rig.dev.hold(VIDIOC_STREAMOFF);
+    rig.engine->params().set(params::ParamId::environment_source, std::string("cubemap"),
+                             params::ParamSource::CommandLine);
+    ASSERT_TRUE(rig.step_until_held(0.5)) << "the close did not wait off the frame thread";
+    int frames_while_held = 0;
+    for (int i = 0; i < 10; ++i) {
+        rig.step();
+        if (rig.dev.held_calls() == 1) ++frames_while_held;
+    }
+    EXPECT_EQ(frames_while_held, 10);
+    EXPECT_EQ(rig.env().reflection(), nullptr);
+    rig.dev.release();
+    rig.frame();
+    EXPECT_EQ(rig.dev.open_fds(), 0);
+    EXPECT_EQ(rig.dev.live_mappings(), 0);
 }
 
 }  // namespace

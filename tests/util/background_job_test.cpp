@@ -3,9 +3,12 @@
 #include "util/background_job.hpp"
 
 #include <gtest/gtest.h>
+#include <pthread.h>
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
+#include <cstring>
 #include <thread>
 
 namespace puddle {
@@ -42,6 +45,23 @@ TEST(BackgroundJob, RunsOffTheCallingThreadAndHandsTheResultOverOnce) {
     EXPECT_FALSE(job.take()) << "a result is handed over once";
 }
 
+TEST(BackgroundJob, RunningEndsWhenTheJobReturnsAndBusyWhenItsResultIsTaken) {
+    BackgroundJob<int> job;
+    EXPECT_FALSE(job.running());
+    std::atomic<bool> go{false};
+    job.submit([&](std::stop_token) {
+        while (!go) std::this_thread::sleep_for(1ms);
+        return 7;
+    });
+    EXPECT_TRUE(job.running());
+    go = true;
+    for (int i = 0; i < 10000 && job.running(); ++i) std::this_thread::sleep_for(1ms);
+    EXPECT_FALSE(job.running());
+    EXPECT_TRUE(job.busy()) << "the result waits to be taken";
+    EXPECT_EQ(job.take(), 7);
+    EXPECT_FALSE(job.busy());
+}
+
 TEST(BackgroundJob, TheNewestSubmissionWinsAndTheOlderOneIsAskedToStop) {
     BackgroundJob<int> job;
     std::atomic<bool> started{false}, saw_stop{false};
@@ -55,6 +75,25 @@ TEST(BackgroundJob, TheNewestSubmissionWinsAndTheOlderOneIsAskedToStop) {
     std::this_thread::sleep_for(20ms);
     EXPECT_FALSE(job.take());
     EXPECT_FALSE(job.busy());
+}
+
+// A SIGTERM delivered to a worker that did not block it would end the process before the frame loop's
+// signalfd saw it (the camera worker starts before app::StopSignals blocks the main thread's signals).
+TEST(BackgroundJob, TheWorkerBlocksSignalsAndTheCallersMaskIsUnchanged) {
+    sigset_t before;
+    pthread_sigmask(SIG_SETMASK, nullptr, &before);
+    BackgroundJob<sigset_t> job;
+    job.submit([](std::stop_token) {
+        sigset_t mask;
+        pthread_sigmask(SIG_SETMASK, nullptr, &mask);
+        return mask;
+    });
+    const auto mask = wait_for_result(job);
+    ASSERT_TRUE(mask);
+    for (int sig : {SIGTERM, SIGINT, SIGHUP}) EXPECT_EQ(sigismember(&*mask, sig), 1) << strsignal(sig);
+    sigset_t after;
+    pthread_sigmask(SIG_SETMASK, nullptr, &after);
+    for (int sig : {SIGTERM, SIGINT, SIGHUP}) EXPECT_EQ(sigismember(&after, sig), sigismember(&before, sig));
 }
 
 TEST(BackgroundJob, DestructionStopsARunningJob) {
