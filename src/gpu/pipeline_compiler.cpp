@@ -2,11 +2,12 @@
 
 #include "gpu/gl.hpp"
 #include "gpu/program_link.hpp"
+#include "util/worker_thread.hpp"
 
 namespace puddle::gpu {
 
 PipelineCompiler::PipelineCompiler(std::unique_ptr<WorkerContext> context) : context_(std::move(context)) {
-    worker_ = std::jthread([this](std::stop_token stop) { run(stop); });
+    worker_ = start_worker_thread([this](std::stop_token stop) { run(stop); });
 }
 
 PipelineCompiler::~PipelineCompiler() {

@@ -4,14 +4,9 @@
 // stop (through its stop_token, checked between its steps), replaces a job still waiting, and only the
 // newest job's result is ever handed back. The thread starts with the first submission, so a run that
 // never submits has none; destruction asks the running job to stop and waits for it to return.
-// The worker blocks every signal, as Mesa's threads do: SIGTERM, SIGINT and SIGHUP are for the frame
-// loop's signalfd (app/signals.hpp), and one delivered to a worker that does not block it would take
-// its default action and end the process.
-
-#include <pthread.h>
+// The worker blocks every signal (util/worker_thread.hpp).
 
 #include <condition_variable>
-#include <csignal>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -19,6 +14,8 @@
 #include <stop_token>
 #include <thread>
 #include <utility>
+
+#include "util/worker_thread.hpp"
 
 namespace puddle {
 
@@ -46,13 +43,7 @@ public:
         pending_ = std::move(work);
         result_.reset();
         job_stop_.request_stop();
-        if (!worker_.joinable()) {
-            sigset_t all, previous;  // the new thread inherits this thread's mask, with no gap
-            sigfillset(&all);
-            pthread_sigmask(SIG_BLOCK, &all, &previous);
-            worker_ = std::jthread([this](std::stop_token stop) { run(stop); });
-            pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-        }
+        if (!worker_.joinable()) worker_ = start_worker_thread([this](std::stop_token stop) { run(stop); });
         waiting_.notify_one();
     }
 
