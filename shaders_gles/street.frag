@@ -41,8 +41,8 @@ uniform vec2 u_lightning_phase;         // radians: 1.7 t + 3 and 2.3 t, modulo 
 // Drifts of the scrolled noises, split into whole lattice cells (the bits of a uint) and a fraction:
 uniform float u_cloud_shift[5];         // per cloud octave, sideways: fraction of a cell
 uniform int u_cloud_cells[5];           // and whole cells
-uniform vec3 u_ground_shift;            // toward the viewer, of the puddle, puddle detail and asphalt noises
-uniform int u_ground_cells[3];
+uniform vec3 u_noise_shift;            // toward the viewer, of the puddle, puddle detail and asphalt noises
+uniform int u_noise_cells[3];
 uniform float u_ripple_age[MAX_SOURCES];  // per source: seconds into its current repeat
 uniform int u_ripple_repeat[MAX_SOURCES];  // which repeat (the bits of a uint): where it falls
 uniform float u_splash_age[MAX_SOURCES];
@@ -70,7 +70,7 @@ vec3 sky(vec2 uv) {
 }
 
 // Screen point below the horizon -> ground coordinates (perspective: x / depth, 1 / depth). The ground's
-// drift toward the viewer moves only its noise (u_ground_shift): ripples and splashes ride along with it,
+// drift toward the viewer moves only its noise (u_noise_shift): ripples and splashes ride along with it,
 // so their distances do not change.
 vec2 ground_of(vec2 uv) {
     float depth = max((u_street_horizon - uv.y) / u_street_horizon, 1e-3);
@@ -119,15 +119,15 @@ void main() {
         color = sky(uv);
     } else {
         vec2 g = ground_of(uv);
-        float outline = scrolled_value_noise(4.0 * g + 0.5 + vec2(0.0, u_ground_shift.x), ivec2(0, u_ground_cells[0]), 3u);
-        float detail = scrolled_value_noise(8.0 * g + 10.0 + vec2(0.0, u_ground_shift.y), ivec2(0, u_ground_cells[1]), 5u);
+        float outline = scrolled_value_noise(4.0 * g + 0.5 + vec2(0.0, u_noise_shift.x), ivec2(0, u_noise_cells[0]), 3u);
+        float detail = scrolled_value_noise(8.0 * g + 10.0 + vec2(0.0, u_noise_shift.y), ivec2(0, u_noise_cells[1]), 5u);
         float puddle = smoothstep(0.42, 0.55, outline + 0.3 * detail);
         float ripple = ripples(g) * puddle;
         // The reflection: the sky at the mirrored screen point, bent by the ripples.
         vec2 mirrored = vec2(uv.x, 2.0 * u_street_horizon - uv.y) + ripple * u_street_ripple_refraction;
         vec3 reflection = sky(mirrored) * 1.3 + u_street_water_tint;
         vec3 asphalt = vec3(0.05, 0.05, 0.06) *
-                       (0.7 + 0.6 * scrolled_value_noise(40.0 * g + vec2(0.0, u_ground_shift.z), ivec2(0, u_ground_cells[2]), 9u));
+                       (0.7 + 0.6 * scrolled_value_noise(40.0 * g + vec2(0.0, u_noise_shift.z), ivec2(0, u_noise_cells[2]), 9u));
         color = mix(asphalt, reflection, mix(u_street_wet_reflection, 1.0, puddle));
         color += vec3(0.25, 0.27, 0.3) * ripple + vec3(0.5) * splashes(g);
     }

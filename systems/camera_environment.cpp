@@ -115,6 +115,12 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
                       env.cube_mirror_ball);
         !r)
         return r;
+    for (auto [pipeline, binding] : {std::pair{&env.cube_planar, &env.cube_planar_params},
+                                     std::pair{&env.cube_mirror_ball, &env.cube_mirror_ball_params}}) {
+        auto bound = bind_params(*pipeline);
+        if (!bound) return bound.error();
+        *binding = std::move(bound).value();
+    }
     env.nearest = device.create_sampler(
         {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
@@ -253,8 +259,8 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
             .set("u_right", right)
             .set("u_up", up)
             .set("u_aspect", aspect)
-            .set("u_tan_half_fov", tan_half)
-            .set("u_environment_camera_blend", params.f(ParamId::environment_camera_blend));
+            .set("u_tan_half_fov", tan_half);
+        set_param_uniforms(pass, ball ? env.cube_mirror_ball_params : env.cube_planar_params, params);
         pass.draw_fullscreen();
     }
     env.cube.generate_mipmaps();

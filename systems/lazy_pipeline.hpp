@@ -8,11 +8,13 @@
 #include <spdlog/spdlog.h>
 
 #include "gpu/device.hpp"
+#include "systems/param_uniforms.hpp"
 
 namespace puddle::systems {
 
 struct LazyPipeline {
     gpu::Pipeline pipeline;
+    ParamBinding params;            // the parameters its shader reads (systems/param_uniforms.hpp)
     gpu::PipelineRequest building;  // a request in flight
     bool failed = false;
 
@@ -46,11 +48,13 @@ struct LazyPipeline {
 
 private:
     Result<void> keep(Result<gpu::Pipeline> built) {
-        if (!built) {
+        auto binding = built ? bind_params(*built) : Result<ParamBinding>(built.error());
+        if (!binding) {
             failed = true;
-            return built.error();
+            return binding.error();
         }
         pipeline = std::move(built).value();
+        params = std::move(binding).value();
         return {};
     }
 };

@@ -46,7 +46,7 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
                      params.f(ParamId::camera_fov), aspect);
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(ocean.pass.pipeline);
-    set_param_uniforms(pass, params);
+    set_param_uniforms(pass, ocean.pass.params, params);
     const OceanTime ot = ocean_time(clock.sim_time, params.f(ParamId::ocean_speed));
     pass.set("u_octave_shift", std::span<const glm::vec4>(ot.shift))
         .set("u_octave_cells", std::span<const glm::ivec2>(ot.cells))

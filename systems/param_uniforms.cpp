@@ -1,23 +1,62 @@
 #include "systems/param_uniforms.hpp"
 
+#include <string>
+#include <string_view>
+
 namespace puddle::systems {
 
-void set_param_uniforms(gpu::RenderPass& pass, const params::Params& params) {
-    using params::ParamKind;
+namespace {
+
+// "u_water_" names a parameter section: the uniform must then be a parameter's.
+bool has_section_prefix(std::string_view uniform) {
     for (const params::ParamDecl& d : params::param_decls()) {
+        const std::string_view section = d.name.substr(0, d.name.find('.'));
+        if (uniform.size() > section.size() + 3 && uniform.starts_with("u_") &&
+            uniform.substr(2, section.size()) == section && uniform[2 + section.size()] == '_')
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+Result<ParamBinding> bind_params(const gpu::Pipeline& pipeline) {
+    ParamBinding binding;
+    for (const std::string& name : pipeline.uniform_names()) {
+        const params::ParamDecl* match = nullptr;
+        for (const params::ParamDecl& d : params::param_decls())
+            if (d.uniform == name) match = &d;
+        if (match) {
+            if (match->kind != params::ParamKind::Path) binding.slots.push_back({pipeline.uniform(name), match});
+            continue;
+        }
+        if (has_section_prefix(name)) {
+            std::string guess(name.substr(2));
+            guess[guess.find('_')] = '.';
+            return make_error(ExitCode::Runtime, "gpu: pipeline '{}': uniform {} is no parameter (did you mean {}?)",
+                              pipeline.label(), name, params::nearest_param_name(guess));
+        }
+    }
+    return binding;
+}
+
+void set_param_uniforms(gpu::RenderPass& pass, const ParamBinding& binding, const params::Params& params) {
+    using params::ParamKind;
+    for (const ParamBinding::Slot& slot : binding.slots) {
+        const params::ParamDecl& d = *slot.decl;
         switch (d.kind) {
-            case ParamKind::Float: pass.set(d.uniform, params.f(d.id)); break;
-            case ParamKind::Int: pass.set(d.uniform, params.i(d.id)); break;
-            case ParamKind::Bool: pass.set(d.uniform, params.b(d.id) ? 1 : 0); break;
+            case ParamKind::Float: pass.set(slot.location, params.f(d.id)); break;
+            case ParamKind::Int: pass.set(slot.location, params.i(d.id)); break;
+            case ParamKind::Bool: pass.set(slot.location, params.b(d.id) ? 1 : 0); break;
             case ParamKind::Vec3:
-            case ParamKind::Color: pass.set(d.uniform, params.v3(d.id)); break;
-            case ParamKind::Enum: {  // the index of the choice, in params.def order
+            case ParamKind::Color: pass.set(slot.location, params.v3(d.id)); break;
+            case ParamKind::Enum: {
                 const std::string& value = params.s(d.id);
                 for (std::size_t k = 0; k < d.choices.size(); ++k)
-                    if (d.choices[k] == value) pass.set(d.uniform, static_cast<int>(k));
+                    if (d.choices[k] == value) pass.set(slot.location, static_cast<int>(k));
                 break;
             }
-            case ParamKind::Path: break;  // files are loaded on the CPU, not uniforms
+            case ParamKind::Path: break;
         }
     }
 }

@@ -31,7 +31,7 @@ void rain_overlay_system(gpu::Device& device, const params::Params& params, cons
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "rain streaks", .target = frame, .load = gpu::LoadOp::Load});
     pass.set_pipeline(rain.pass.pipeline);
-    set_param_uniforms(pass, params);
+    set_param_uniforms(pass, rain.pass.params, params);
     pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.f(ParamId::overlay_rain_speed)))
         .set("u_resolution", glm::vec2(frame.size))
         .set("u_seed", params.i(ParamId::rain_seed));

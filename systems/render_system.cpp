@@ -25,17 +25,17 @@ gpu::PipelineDesc puddle_desc(const PuddleVariant& v, bool surface_unorm) {
 
 }  // namespace
 
-const gpu::Pipeline* PuddleRenderer::pipeline(gpu::Device& device, const PuddleVariant& v) {
+const LazyPipeline* PuddleRenderer::pipeline(gpu::Device& device, const PuddleVariant& v) {
     const std::size_t index = variant_index(v);
     LazyPipeline& slot = variants[index];
     const bool was_ready = slot.ready();
     if (!slot.request(device, [&] { return puddle_desc(v, surface_unorm); })) {
         if (shown == puddle_variant_count) return nullptr;
-        return &variants[shown].pipeline;  // also when `v` failed: the last good picture stays
+        return &variants[shown];  // also when `v` failed: the last good picture stays
     }
     if (!was_ready) spdlog::debug("render: compiled the puddle shader for {}", describe(v));
     shown = index;
-    return &slot.pipeline;
+    return &slot;
 }
 
 Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
@@ -53,7 +53,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
                    const PuddleVariant* variant) {
     const gpu::FrameTarget& frame = target.target;
     const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
-    const gpu::Pipeline* pipeline =
+    const LazyPipeline* pipeline =
         renderer.pipeline(device, variant ? *variant : choose_puddle_variant(params, rgbm));
     if (!pipeline) return;
 
@@ -71,11 +71,11 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
 
     auto pass = device.begin_pass({.label = "puddle", .target = frame, .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(*pipeline)
+    pass.set_pipeline(pipeline->pipeline)
         .set_texture(0, surface.texture, surface.sampler)
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
-    set_param_uniforms(pass, params);
+    set_param_uniforms(pass, pipeline->params, params);
     pass.set("u_cam_forward", forward)
         .set("u_cam_right", right)
         .set("u_cam_up", up)

@@ -29,7 +29,7 @@ struct PuddleRenderer {
     // The pipeline for `v` once built; until then (a build off the frame thread) the variant drawn last,
     // so a knob that needs a new variant switches the picture in one frame when it is ready, and the
     // variant drawn last also when `v` fails to build (logged once). Null when none was ever ready.
-    const gpu::Pipeline* pipeline(gpu::Device& device, const PuddleVariant& v);
+    const LazyPipeline* pipeline(gpu::Device& device, const PuddleVariant& v);
 };
 
 // Compiles the variant these parameters select, so a shader that does not build stops start-up.

@@ -76,14 +76,14 @@ void street_system(gpu::Device& device, const params::Params& params, const Fram
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "street", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(street.pass.pipeline);
-    set_param_uniforms(pass, params);
+    set_param_uniforms(pass, street.pass.params, params);
     const StreetTime st = street_time(params, clock.sim_time);
     pass.set("u_aspect", static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1)))
         .set("u_lightning_phase", st.lightning_phase)
         .set("u_cloud_shift", std::span<const float>(st.cloud_shift))
         .set("u_cloud_cells", std::span<const int>(st.cloud_cells))
-        .set("u_ground_shift", st.ground_shift)
-        .set("u_ground_cells", std::span<const int>(st.ground_cells))
+        .set("u_noise_shift", st.ground_shift)
+        .set("u_noise_cells", std::span<const int>(st.ground_cells))
         .set("u_ripple_age", std::span<const float>(st.ripple_age))
         .set("u_ripple_repeat", std::span<const int>(st.ripple_repeat))
         .set("u_splash_age", std::span<const float>(st.splash_age))

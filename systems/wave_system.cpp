@@ -30,7 +30,10 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
                                                 .textures = {"u_field"},
                                                 .uniform_blocks = {"Drops"}});
         if (!pipeline) return pipeline.error();
+        auto binding = bind_params(*pipeline);
+        if (!binding) return binding.error();
         f.step = std::move(pipeline).value();
+        f.step_params = std::move(binding).value();
         // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
         f.nearest = device.create_sampler(
             {.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
@@ -54,6 +57,7 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     }
     if (reuse) {
         f.step = std::move(field.step);
+        f.step_params = std::move(field.step_params);
         f.nearest = std::move(field.nearest);
         f.drops = std::move(field.drops);
     }
@@ -71,8 +75,8 @@ void wave_system(gpu::Device& device, const params::Params& params, const LiveDr
     pass.set_pipeline(field.step)
         .set_texture(0, field.newest(), field.nearest)
         .set_uniform_buffer(0, field.drops)
-        .set("u_drop_count", drops.count)
-        .set("u_wave_damping", params.f(ParamId::wave_damping));
+        .set("u_drop_count", drops.count);
+    set_param_uniforms(pass, field.step_params, params);
     pass.draw_fullscreen();
     field.current = static_cast<int>(next);
 }

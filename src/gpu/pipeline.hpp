@@ -29,6 +29,13 @@ namespace detail {
 void delete_program(GLuint id);
 }
 
+// An active uniform's location, looked up once (Pipeline::uniform) so that a pass sets it every frame
+// without searching names; -1: the shader does not use it (setting it is then a no-op, as in GL).
+struct UniformLocation {
+    int value = -1;
+    bool active() const { return value >= 0; }
+};
+
 class Pipeline {
 public:
     Pipeline() = default;
@@ -36,6 +43,7 @@ public:
     const std::string& label() const { return label_; }
     // Location of an active uniform, or -1 when the shader does not use it (setting it is then a no-op).
     GLint location(std::string_view uniform) const;
+    UniformLocation uniform(std::string_view name) const { return {location(name)}; }
     std::span<const std::string> uniform_names() const { return names_; }
     Blend blend() const { return blend_; }
 

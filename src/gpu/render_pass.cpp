@@ -64,6 +64,18 @@ RenderPass& RenderPass::set_uniform_buffer(int binding, const Buffer& buffer) {
     return *this;
 }
 
+RenderPass& RenderPass::set(UniformLocation at, float v) {
+    glUniform1f(at.value, v);
+    return *this;
+}
+RenderPass& RenderPass::set(UniformLocation at, int v) {
+    glUniform1i(at.value, v);
+    return *this;
+}
+RenderPass& RenderPass::set(UniformLocation at, glm::vec3 v) {
+    glUniform3fv(at.value, 1, glm::value_ptr(v));
+    return *this;
+}
 RenderPass& RenderPass::set(std::string_view name, float v) {
     glUniform1f(pipeline_->location(name), v);
     return *this;

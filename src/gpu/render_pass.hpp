@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "gpu/frame_target.hpp"
+#include "gpu/pipeline.hpp"
 
 namespace puddle::gpu {
 
@@ -59,6 +60,10 @@ public:
     RenderPass& set(std::string_view name, std::span<const int> v);
     RenderPass& set(std::string_view name, std::span<const glm::ivec2> v);
     RenderPass& set(std::string_view name, std::span<const glm::vec4> v);
+    // Uniforms at locations looked up once (Pipeline::uniform): the parameter bindings.
+    RenderPass& set(UniformLocation at, float v);
+    RenderPass& set(UniformLocation at, int v);
+    RenderPass& set(UniformLocation at, glm::vec3 v);
     // One triangle covering the target; the vertex shader makes it from gl_VertexID.
     void draw_fullscreen();
     void end();
