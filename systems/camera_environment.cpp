@@ -4,7 +4,6 @@
 #include <spdlog/spdlog.h>
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -18,10 +17,6 @@ using camera::PixelLayout;
 using params::ParamId;
 
 namespace {
-
-int mip_count(int size) {
-    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
-}
 
 // Makes `texture` anew only when its shape changes: once per stream, never per frame. A texture the GPU
 // cannot make disables the camera environment (one error line; the cubemap stays).
@@ -45,7 +40,7 @@ Result<void> ensure_colour(gpu::Device& device, CameraEnvironment& env, int widt
                            .format = gpu::TextureFormat::SRGB8_A8,
                            .width = width,
                            .height = height,
-                           .mip_levels = mip_count(std::max(width, height)),
+                           .mip_levels = gpu::full_mip_count(std::max(width, height)),
                            .render_target = true},
                           env);
 }
@@ -129,7 +124,7 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
                                        .format = gpu::TextureFormat::SRGB8_A8,
                                        .width = camera_cube_size,
                                        .height = camera_cube_size,
-                                       .mip_levels = mip_count(camera_cube_size),
+                                       .mip_levels = gpu::full_mip_count(camera_cube_size),
                                        .render_target = true});
     if (!made) return made.error();
     env.cube = std::move(made).value();

@@ -2,7 +2,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <bit>
 #include <cstddef>
 
 #include "assets/environment_images.hpp"
@@ -15,10 +14,6 @@ namespace puddle::systems {
 using params::ParamId;
 
 namespace {
-
-int mip_count(int size) {
-    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
-}
 
 Error stopped(const EnvironmentRequest& request) {
     return make_error(ExitCode::Asset, "environment: {}: loading stopped (a newer one was asked for)",
@@ -36,7 +31,7 @@ Result<void> prepare_faces(assets::CubeImages& cube, const EnvironmentRequest& r
     out.face_size = cube.faces[0].width;
     out.cube_levels.push_back(std::move(cube.faces));
     if (!out.rgbm) return {};
-    const int levels = mip_count(out.face_size);
+    const int levels = gpu::full_mip_count(out.face_size);
     for (int level = 1; level < levels; ++level) {
         std::array<assets::Image, 6> next;
         for (std::size_t face = 0; face < 6; ++face) next[face] = assets::halve(out.cube_levels.back()[face]);

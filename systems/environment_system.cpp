@@ -2,7 +2,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <bit>
 #include <cstddef>
 #include <span>
 
@@ -15,10 +14,6 @@ using params::ParamId;
 
 namespace {
 
-int mip_count(int size) {
-    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
-}
-
 Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const std::string& path,
                            Ground& ground) {
     const assets::Image& image = prepared.image;
@@ -28,7 +23,7 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
                                           .format = gpu::TextureFormat::SRGB8_A8,
                                           .width = image.width,
                                           .height = image.height,
-                                          .mip_levels = mip_count(std::max(image.width, image.height))});
+                                          .mip_levels = gpu::full_mip_count(std::max(image.width, image.height))});
     if (!texture) return texture.error();
     g.texture = std::move(texture).value();
     g.texture.upload(std::as_bytes(std::span(image.data)));

@@ -3,21 +3,12 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <bit>
 #include <cstddef>
 #include <span>
 
 #include "systems/banded_upload.hpp"
 
 namespace puddle::systems {
-namespace {
-
-int mip_count(int size) {
-    return std::bit_width(static_cast<unsigned>(std::max(size, 1)));
-}
-
-}  // namespace
-
 Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFormat format, int face_size,
                                              int smallest_face_size) {
     auto make = [&](int size) {
@@ -26,7 +17,7 @@ Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFo
                                       .format = format,
                                       .width = size,
                                       .height = size,
-                                      .mip_levels = mip_count(size),
+                                      .mip_levels = gpu::full_mip_count(size),
                                       .render_target = true});
     };
     auto cube = make(face_size);
@@ -60,7 +51,7 @@ std::vector<assets::Image> panorama_mip_chain(assets::Image panorama, int max_te
                      width, height, panorama.width, panorama.height, max_texture_size);
     std::vector<assets::Image> levels;
     const bool hdr = panorama.format == assets::PixelFormat::RGBA32F;
-    const int count = hdr ? mip_count(panorama.width) : 1;
+    const int count = hdr ? gpu::full_mip_count(panorama.width) : 1;
     levels.reserve(static_cast<std::size_t>(count));
     levels.push_back(std::move(panorama));
     while (static_cast<int>(levels.size()) < count && !stop.stop_requested())
@@ -77,7 +68,7 @@ EquirectToCube::EquirectToCube(std::vector<assets::Image> levels, int face_size,
       rgbm_(rgbm) {
     panorama_width_ = levels_.front().width;
     panorama_height_ = levels_.front().height;
-    panorama_mips_ = mip_count(panorama_width_);
+    panorama_mips_ = gpu::full_mip_count(panorama_width_);
 }
 
 Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {

@@ -4,6 +4,7 @@
 // returns an error naming the texture, its size and the GL error instead of an empty texture.
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -35,6 +36,10 @@ struct TextureDesc {
     // framebuffer is complete, so an unrenderable format fails at creation, not as a black frame.
     bool render_target = false;
 };
+
+// Levels of a full mip chain for a largest side of `size` texels: floor(log2(size)) + 1, down to 1x1
+// (GLES 3.2 section 8.14.3, "Mipmapping"); 1 for sizes below 1.
+inline int full_mip_count(int size) { return std::bit_width(static_cast<unsigned>(size < 1 ? 1 : size)); }
 
 // Bytes of GPU storage the texture asks for: every level, every face (the driver may pad).
 std::uint64_t storage_bytes(const TextureDesc& desc);
