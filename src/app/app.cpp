@@ -1,6 +1,7 @@
 #include "app/app.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -118,6 +119,9 @@ void log_stats(const FrameStats::Summary& s) {
 }  // namespace
 
 int run(int argc, const char* const* argv) {
+    // A log reader that goes away (`puddle | head`) must not end the display: writes then fail with
+    // EPIPE and are dropped (systemd sets the same for services: IgnoreSIGPIPE=yes).
+    std::signal(SIGPIPE, SIG_IGN);
     setup_logging(detect_log_style());
 
     auto options = parse_command_line(argc, argv);

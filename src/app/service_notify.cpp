@@ -4,8 +4,11 @@
 #include <sys/un.h>
 #include <unistd.h>
 
+#include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 #include <spdlog/spdlog.h>
 
@@ -25,7 +28,17 @@ ServiceNotify ServiceNotify::from_environment() {
     const char* usec = std::getenv("WATCHDOG_USEC");
     const char* pid = std::getenv("WATCHDOG_PID");
     const bool ours = !pid || std::strtol(pid, nullptr, 10) == ::getpid();
-    if (usec && ours) n.watchdog_seconds_ = static_cast<double>(std::strtoull(usec, nullptr, 10)) * 1e-6;
+    if (usec && ours) {
+        // Whole microseconds, above zero, as sd_watchdog_enabled(3) accepts; strtoull took "-5" as 2^64 - 5.
+        const std::string_view text(usec);
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error == std::errc() && end == text.data() + text.size() && value > 0)
+            n.watchdog_seconds_ = static_cast<double>(value) * 1e-6;
+        else
+            spdlog::warn("systemd: WATCHDOG_USEC={} is not a whole number of microseconds above 0; no watchdog pings",
+                         text);
+    }
     return n;
 }
 

@@ -37,9 +37,24 @@ public:
     glm::ivec2 size() const override { return size_; }
     gpu::FrameTarget frame_target() const override { return {&target_, size_}; }
     bool poll_events() override { return true; }
+    // Nothing to show, but paced like a swap chain two frames deep: wait until the frame before this one
+    // is done on the GPU. A bare glFlush let llvmpipe queue dozens of slow frames (the ocean) and then
+    // block for all of them at once, 5 to 11 s without a watchdog ping (issue 15, fault 6).
     Result<void> present() override {
-        glFlush();  // nothing to show; keep the GPU queue short
+        GLsync done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        glFlush();
+        if (in_flight_) {
+            glClientWaitSync(in_flight_, 0, GL_TIMEOUT_IGNORED);  // a hung GPU: the watchdog's case
+            glDeleteSync(in_flight_);
+        }
+        in_flight_ = done;
         return {};
+    }
+    ~HeadlessDisplay() override {
+        if (in_flight_) {
+            (void)context_.make_current_surfaceless();
+            glDeleteSync(in_flight_);
+        }
     }
     std::string describe() const override {
         return fmt::format("headless: EGL surfaceless ({}) {}x{}", context_.vendor(), size_.x, size_.y);
@@ -49,6 +64,7 @@ private:
     EglContext context_;
     glm::ivec2 size_;
     gpu::Texture target_;
+    GLsync in_flight_ = nullptr;  // the previous frame's fence
 };
 
 }  // namespace

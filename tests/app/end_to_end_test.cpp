@@ -28,6 +28,20 @@ TEST(EndToEnd, RendersAPngHeadlessAndExitsZero) {
     EXPECT_NE(r.output.find(png), std::string::npos) << "says where the PNG went:\n" << r.output;
 }
 
+// `puddle | head`: the reader goes away after one byte, and later log lines meet a closed pipe. They
+// are dropped; the run goes on to its end (before, SIGPIPE ended it with exit 141).
+TEST(EndToEnd, ALogReaderThatGoesAwayDoesNotEndTheRun) {
+    TempDir dir;
+    const std::string png = (dir / "out.png").string();
+    const std::string cmd = std::string("bash -c '") + PUDDLE_BINARY +
+                            " -b headless --size 64x36 --frames 60 --screenshot " + png +
+                            " 2>&1 | head -c 1 >/dev/null; exit ${PIPESTATUS[0]}'";
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_TRUE(std::filesystem::exists(png)) << "the run went on to write its PNG";
+}
+
 TEST(EndToEnd, SameCommandLineGivesTheSameImage) {
     TempDir dir;
     const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();

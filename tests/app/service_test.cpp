@@ -57,6 +57,20 @@ struct Env {
     const char* name_;
 };
 
+// Only whole microseconds above zero are a watchdog period; "-5" had been read as 2^64 - 5 microseconds.
+TEST(ServiceNotify, AWatchdogPeriodThatIsNoPositiveWholeNumberMeansNoPings) {
+    test::TempDir dir;
+    NotifyListener systemd(dir / "notify");
+    ASSERT_TRUE(systemd.ok());
+    Env socket("NOTIFY_SOCKET", systemd.path());
+    for (const char* bad : {"-5", "0", "2s", "", "1e6", "99999999999999999999999"}) {
+        Env watchdog("WATCHDOG_USEC", bad);
+        EXPECT_EQ(ServiceNotify::from_environment().watchdog_interval(), 0.0) << "WATCHDOG_USEC=" << bad;
+    }
+    Env watchdog("WATCHDOG_USEC", "250000");
+    EXPECT_DOUBLE_EQ(ServiceNotify::from_environment().watchdog_interval(), 0.25);
+}
+
 TEST(ServiceNotify, ReadyAfterTheFirstFrameThenPingsOnlyWhileFramesArePresented) {
     test::TempDir dir;
     NotifyListener systemd(dir / "notify");

@@ -165,6 +165,28 @@ TEST(WatchdogEndToEnd, ALiveEditToALargeSkyKeepsThePingsWithinHalfTheWatchdogPer
     EXPECT_GT(g, 1.5 * b) << "mean green " << g << ", blue " << b;
 }
 
+// A slow scene headless: every frame waits for the one before it on the GPU, as a swap chain does, so
+// the pings come at the scene's own pace. Before, present() only flushed: llvmpipe queued dozens of
+// ocean frames, then one frame blocked for all of them, 5 to 11 s without a ping (a new user's review).
+TEST(WatchdogEndToEnd, AHeadlessOceanPingsAtItsOwnPaceInsteadOfQueueingFrames) {
+    TempDir dir;
+    NotifySocket systemd((dir / "notify").string());
+    ASSERT_TRUE(systemd.ok());
+    constexpr double watchdog_seconds = 2.0;
+    Running puddle({"-b", "headless", "--size", "320x180", "--frames", "0", "--set", "scene.kind=ocean"},
+                   dir / "log.txt", {"NOTIFY_SOCKET=" + systemd.path(), "WATCHDOG_USEC=2000000"});
+    ASSERT_TRUE(wait_until(puddle, 120, [&] { return systemd.count("READY=1") == 1; })) << puddle.log();
+    ASSERT_TRUE(wait_until(puddle, 120, [&] { return systemd.count("WATCHDOG=1") >= 12; })) << puddle.log();
+    ASSERT_EQ(puddle.stop(), 0) << puddle.log();
+    const auto messages = systemd.received();
+    double longest = 0;
+    for (std::size_t i = 1; i < messages.size(); ++i)
+        if (messages[i].text == "WATCHDOG=1")
+            longest = std::max(longest, std::chrono::duration<double>(messages[i].at - messages[i - 1].at).count());
+    RecordProperty("longest_gap_ms", static_cast<int>(longest * 1000));
+    EXPECT_LT(longest, watchdog_seconds / 2) << "the longest gap between pings, in seconds\n" << puddle.log();
+}
+
 // The same for the camera (issue 15, fault 6: "camera opening"): a live edit switches the reflection to
 // a mock camera folder of large images, which takes a second or more to decode. The old code decoded it
 // inside one frame; now the worker does, and the pings go on.
