@@ -1,7 +1,6 @@
 #include "app/app.hpp"
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include "app/cli.hpp"
 #include "app/check.hpp"
 #include "app/engine.hpp"
+#include "app/process_setup.hpp"
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
 #include "app/service_notify.hpp"
@@ -119,9 +119,7 @@ void log_stats(const FrameStats::Summary& s) {
 }  // namespace
 
 int run(int argc, const char* const* argv) {
-    // A log reader that goes away (`puddle | head`) must not end the display: writes then fail with
-    // EPIPE and are dropped (systemd sets the same for services: IgnoreSIGPIPE=yes).
-    std::signal(SIGPIPE, SIG_IGN);
+    setup_process();
     setup_logging(detect_log_style());
 
     auto options = parse_command_line(argc, argv);

@@ -27,6 +27,7 @@
 #include "app/app.hpp"
 #include "app/engine.hpp"
 #include "app/logging.hpp"
+#include "app/process_setup.hpp"
 #include "assets/image_io.hpp"
 #include "soak/process_sample.hpp"
 #include "soak/soak_plan.hpp"
@@ -389,5 +390,6 @@ int run(int argc, char** argv) {
 }  // namespace puddle::soak
 
 int main(int argc, char** argv) {
+    puddle::app::setup_process();  // as the binary's main: the same malloc arenas, the same signals
     return puddle::soak::run(argc, argv);
 }

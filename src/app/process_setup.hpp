@@ -1,0 +1,14 @@
+#pragma once
+// Process-wide settings for a display that runs for months, made once at the start of main (the puddle
+// binary and the soak test, which builds the engine the binary builds):
+// - SIGPIPE ignored: a log reader that goes away (`puddle | head`) must not end the display; writes then
+//   fail with EPIPE and are dropped (systemd sets the same for services: IgnoreSIGPIPE=yes).
+// - One malloc arena (glibc mallopt M_ARENA_MAX, malloc(3)): the worker threads (pipeline compiler,
+//   camera, sky decoding) would otherwise each get an arena whose freed memory glibc returns late, and
+//   resident memory then wandered by over 1 MiB in the soak test; with one arena it stays flat. Those
+//   threads allocate rarely, so sharing the arena costs nothing measurable.
+namespace puddle::app {
+
+void setup_process();
+
+}  // namespace puddle::app
