@@ -96,6 +96,7 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     } else {
         spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
     }
+    if (auto r = io::check_gpio_spec(o.gpio); !r) return r.error();
     if (!tuning.layers.config().knobs.empty()) {
         tuning.state.emplace(o.state_path.empty() ? params::StateStore::default_path() : o.state_path);
         restore_saved_state(tuning, read_only);

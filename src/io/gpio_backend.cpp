@@ -51,14 +51,19 @@ Error gpio_request_error(const LineRequest& r, int err) {
     }
 }
 
+Result<void> check_gpio_spec(std::string_view spec) {
+    if (spec.empty() || spec == "gpiod" || (spec.starts_with("mock:") && spec.size() > 5)) return {};
+    return make_error(ExitCode::Config, "--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO of line changes)",
+                      spec);
+}
+
 Result<std::unique_ptr<GpioBackend>> make_gpio_backend(std::string_view spec) {
-    if (spec.empty() || spec == "gpiod") return make_gpiod_backend();
+    if (auto r = check_gpio_spec(spec); !r) return r.error();
     if (spec.starts_with("mock:")) {
         std::unique_ptr<GpioBackend> mock = std::make_unique<MockGpio>(std::string(spec.substr(5)));
         return mock;
     }
-    return make_error(ExitCode::Config, "--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO of line changes)",
-                      spec);
+    return make_gpiod_backend();
 }
 
 }  // namespace puddle::io

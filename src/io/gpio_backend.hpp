@@ -66,6 +66,9 @@ std::vector<std::string> gpio_chip_paths();
 std::unique_ptr<GpioBackend> make_gpiod_backend();
 // "gpiod" (the default) or "mock:PATH" (a script or FIFO of mock line changes, see gpio_mock.hpp).
 Result<std::unique_ptr<GpioBackend>> make_gpio_backend(std::string_view spec);
+// Whether --gpio names a backend at all ("gpiod", "mock:PATH"); checked even when no knob needs one, so
+// a typo is exit 2 at once and not only after knobs are added. Error code Config.
+Result<void> check_gpio_spec(std::string_view spec);
 
 // The one-line message for a failed request: what, where, and how to fix it.
 Error gpio_request_error(const LineRequest& request, int err);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -19,6 +20,8 @@ constexpr int mock_line_count = 64;
 constexpr std::size_t queue_size = 64;  // like the kernel's event FIFO: the oldest edges drop when full
 constexpr std::size_t max_script_line = 4096;          // a command is a few words
 constexpr std::size_t max_script_pending = 64 * 1024;  // read ahead, at most
+constexpr double max_wait_seconds = 86400;
+constexpr int bad_lines_warned = 3;
 }  // namespace
 
 struct MockGpio::Chip {
@@ -169,6 +172,14 @@ bool MockGpio::command(std::string_view text, double now) {
     return false;
 }
 
+void MockGpio::note_bad_line(std::string_view line, std::string_view why) {
+    std::string shown(line.substr(0, 120));
+    std::replace_if(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+    const auto level = ++bad_lines_ <= bad_lines_warned ? spdlog::level::warn : spdlog::level::debug;
+    spdlog::log(level, "gpio: mock script {}: {}: '{}'{}", script_, why, shown,
+                bad_lines_ == bad_lines_warned ? " (further bad lines are logged at debug level)" : "");
+}
+
 void MockGpio::poll(double now) {
     if (fd_ < 0) return;
     char buffer[1024];
@@ -192,11 +203,14 @@ void MockGpio::poll(double now) {
         start = nl + 1;
         double seconds = 0;
         if (std::sscanf(std::string(line).c_str(), "wait %lf", &seconds) == 1) {
-            resume_at_ = now + seconds;  // the rest of the script runs after that
-            break;
+            if (std::isfinite(seconds) && seconds >= 0 && seconds <= max_wait_seconds) {
+                resume_at_ = now + seconds;  // the rest of the script runs after that
+                break;
+            }
+            note_bad_line(line, fmt::format("a wait takes 0 to {:g} seconds", max_wait_seconds));
+            continue;
         }
-        if (!command(line, now) && !line.empty() && line[0] != '#')
-            spdlog::warn("gpio: mock script {}: not a command: '{}'", script_, line);
+        if (!command(line, now) && !line.empty() && line[0] != '#') note_bad_line(line, "not a command");
     }
     pending_.erase(0, start);
     if (pending_.size() > max_script_line && pending_.find('\n') == std::string::npos) {

@@ -8,10 +8,12 @@
 //   add gpiochip1 LABEL   plug a chip in (64 lines; LABEL optional)
 //   busy gpiochip0 17     another program holds the line
 //   deny gpiochip0 17     permission denied on the line
-//   wait 0.5              run the rest of the script half a second later
+//   wait 0.5              run the rest of the script half a second later (0 to 86400 s)
 //   # ...                 a comment
 //
 // A line longer than 4 KiB is skipped with a warning, and at most 64 KiB of the script is read ahead.
+// A line that is no command is logged with its control bytes shown as '?': the first 3 as warnings,
+// the rest at debug level (a binary file is not a flood of warnings).
 //
 // There is a chip gpiochip0 (label "mock-gpio") from the start. Line names are GPIO<offset>. A line
 // nobody drove sits at its bias: high with pull-up, else low.
@@ -44,11 +46,14 @@ public:
     struct Chip;
 
 private:
+    void note_bad_line(std::string_view line, std::string_view why);
+
     std::map<std::string, std::shared_ptr<Chip>> chips_;
     std::string script_;
     int fd_ = -1;
     std::string pending_;  // script text read but not yet run
     bool skipping_long_line_ = false;
+    int bad_lines_ = 0;
     double last_time_ = 0;
     double resume_at_ = 0;  // after a `wait`
 };

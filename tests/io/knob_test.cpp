@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <fmt/format.h>
+
 #include "io/gpio_mock.hpp"
 #include "io/knob.hpp"
 #include "support/test_support.hpp"
@@ -223,6 +225,33 @@ TEST(GpioMock, AHugeOffsetOrAnEndlessLineIsSkippedAndTheScriptGoesOn) {
     EXPECT_TRUE((*line)->level().value()) << "the command after the long line ran";
     EXPECT_FALSE(gpio.command("gpiochip0 99999999999 1", 20.0));
     EXPECT_FALSE(gpio.command("deny gpiochip0 99999999999", 20.0));
+}
+
+// A wait that is no sensible time (negative, NaN, a billion seconds) is skipped with a warning: "wait 1e12"
+// had stopped the rest of the script for good.
+TEST(GpioMock, AWaitOutsideZeroToADayIsSkippedAndTheScriptGoesOn) {
+    test::TempDir dir;
+    const std::string script = dir.write("gpio.txt", "wait 1e12\nwait nan\nwait -1\ngpiochip0 5 1\n");
+    MockGpio gpio(script);
+    auto line = gpio.request({"gpiochip0", "5"});
+    ASSERT_TRUE(line);
+    gpio.poll(10.0);
+    gpio.poll(10.1);
+    EXPECT_TRUE((*line)->level().value()) << "the command after the bad waits ran";
+}
+
+TEST(GpioBackendSpec, OnlyGpiodAndMockPathAreBackends) {
+    EXPECT_TRUE(check_gpio_spec("").ok());
+    EXPECT_TRUE(check_gpio_spec("gpiod").ok());
+    EXPECT_TRUE(check_gpio_spec("mock:/tmp/knobs.txt").ok());
+    for (const char* bad : {"bogus", "mock:", "gpiod2", "Mock:/x"}) {
+        auto r = check_gpio_spec(bad);
+        ASSERT_FALSE(r.ok()) << bad;
+        EXPECT_EQ(r.error().code, ExitCode::Config);
+        EXPECT_EQ(r.error().message, fmt::format("--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO "
+                                                 "of line changes)",
+                                                 bad));
+    }
 }
 
 }  // namespace
