@@ -62,8 +62,7 @@ void drop_system(const params::Params& params, const FrameClock& clock, ecs::Wor
             if (e.valid()) world.despawn(e);
             const DropSample s = sample_drop(seed, slot, cycle, intensity);
             e = world.spawn();
-            drop = &world.add(e, Drop{slot, cycle, s.position, s.strength,
-                                      (static_cast<double>(cycle) - 0.7 * static_cast<double>(drop_phase_offset(slot))) / speed});
+            drop = &world.add(e, Drop{slot, cycle, s.position, s.strength});
         }
         const float amount = drop->strength * drop_activation(t - static_cast<double>(cycle));
         if (amount > 0.01f)

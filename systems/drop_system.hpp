@@ -24,7 +24,6 @@ struct Drop {
     std::int64_t cycle = 0;    // which of its cycles this is
     glm::vec2 position{};      // in the height field, 0..1 on both axes
     float strength = 0.0f;     // intensity * (0.5 + 0.5 * random)
-    double birth_time = 0.0;   // simulated time the cycle began
 };
 
 // Resource: the entity of each slot (invalid when the slot is empty).

@@ -40,7 +40,6 @@ public:
     assets::Image read_frame();
 
     ecs::World& world() { return world_; }
-    ecs::Schedule& schedule() { return schedule_; }
     params::Params& params();
     gpu::Device& device();
     platform::Display& display() { return *display_; }
