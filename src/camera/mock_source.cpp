@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "assets/image_io.hpp"
 #include "camera/camera_source.hpp"
@@ -21,6 +22,21 @@ namespace {
 // A mock folder is decoded into memory whole: bound it (256 frames of 640x360, or 32 of 1920x1080).
 constexpr std::size_t mock_max_images = 256;
 constexpr std::size_t mock_max_bytes = std::size_t{256} << 20;
+
+// Every image matches the first one's size, and all of them up to `file` take at most `mock_max_bytes`
+// (`bytes_so_far`) decoded.
+Result<void> check_frame(const std::string& path, const std::string& file, int width, int height,
+                         const assets::ImageInfo& first, std::size_t bytes_so_far) {
+    if (width != first.width || height != first.height)
+        return make_error(ExitCode::Asset,
+                          "camera: mock:{}: {} is {}x{}, the first image is {}x{}; all must match", path,
+                          file, width, height, first.width, first.height);
+    if (bytes_so_far > mock_max_bytes)
+        return make_error(ExitCode::Asset,
+                          "camera: mock:{}: the images up to {} take {} MiB decoded; the limit is {} MiB",
+                          path, file, bytes_so_far >> 20, mock_max_bytes >> 20);
+    return {};
+}
 
 class MockSource final : public CameraSource {
 public:
@@ -82,22 +98,33 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
     } else {
         files.push_back(path);
     }
-    std::vector<assets::Image> frames;
+    // Every header first (cheap: no pixel is decoded), so a folder that breaks a rule is refused
+    // before the decode it would cost: on a small board, 16000x16000 PNGs take gigabytes (issue 15).
     std::size_t bytes = 0;
+    std::optional<assets::ImageInfo> first;
+    for (const std::string& file : files) {
+        if (stop.stop_requested())
+            return make_error(ExitCode::Runtime, "camera: mock:{}: opening stopped before {}", path, file);
+        auto header = assets::probe_image(file);
+        if (!header) return make_error(ExitCode::Asset, "camera: mock: {}", header.error().message);
+        if (!first) first = *header;
+        if (auto fits = check_frame(path, file, header->width, header->height, *first,
+                                    bytes += header->decoded_bytes());
+            !fits)
+            return fits.error();
+    }
+    std::vector<assets::Image> frames;
+    bytes = 0;
     for (const std::string& file : files) {
         if (stop.stop_requested())  // shutting down: one image's decode is the longest wait
             return make_error(ExitCode::Runtime, "camera: mock:{}: opening stopped before {}", path, file);
         auto image = assets::read_image(file);
         if (!image) return make_error(ExitCode::Asset, "camera: mock: {}", image.error().message);
-        if (!frames.empty() && (image->width != frames[0].width || image->height != frames[0].height))
-            return make_error(ExitCode::Asset,
-                              "camera: mock:{}: {} is {}x{}, the first image is {}x{}; all must match", path,
-                              file, image->width, image->height, frames[0].width, frames[0].height);
-        bytes += image->data.size();
-        if (bytes > mock_max_bytes)
-            return make_error(ExitCode::Asset,
-                              "camera: mock:{}: the images up to {} take {} MiB decoded; the limit is {} MiB",
-                              path, file, bytes >> 20, mock_max_bytes >> 20);
+        // Again on the pixels, should a file have changed since its header was read.
+        if (auto fits =
+                check_frame(path, file, image->width, image->height, *first, bytes += image->data.size());
+            !fits)
+            return fits.error();
         frames.push_back(std::move(image).value());
     }
     return std::unique_ptr<CameraSource>(

@@ -6,6 +6,7 @@
 #include "assets/image_io.hpp"
 #include "camera/camera_source.hpp"
 #include "camera/fake_v4l2_device.hpp"
+#include "support/image_bomb.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::test {
@@ -47,6 +48,35 @@ TEST(MockSource, AFolderOfTooManyImagesIsRefusedBeforeDecodingAny) {
     EXPECT_EQ(src.error().code, ExitCode::Asset);
     EXPECT_EQ(src.error().message, "camera: mock:" + dir.path().string() +
                                        ": the folder holds more than 256 images; the limit is 256");
+}
+
+// Issue 15: the folder's limits are checked on the headers, before any image is decoded. The PNG claims
+// 16000x16000 (976 MiB as RGBA8) over a few bytes: decoded first, it cost 2 GB of peak memory and ended
+// in the decoder's error rather than the limit's.
+TEST(MockSource, AnImageOverTheFolderLimitIsRefusedFromItsHeaderWithoutDecoding) {
+    TempDir dir;
+    const std::string bomb = dir.write("bomb.png", png_claiming(16000, 16000));
+    FakeV4l2Device unused;
+    const std::size_t peak_before = peak_rss_bytes();
+    auto src = camera::open_camera_source(unused, {.device = "mock:" + bomb});
+    ASSERT_FALSE(src);
+    EXPECT_EQ(src.error().code, ExitCode::Asset);
+    EXPECT_EQ(src.error().message, "camera: mock:" + bomb + ": the images up to " + bomb +
+                                       " take 976 MiB decoded; the limit is 256 MiB");
+    EXPECT_LT(peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
+}
+
+TEST(MockSource, AnImageOfAnotherSizeIsRefusedFromItsHeaderWithoutDecoding) {
+    TempDir dir;
+    write_solid((dir / "0.png").string(), 10);
+    const std::string bomb = dir.write("a.png", png_claiming(16000, 16000));
+    FakeV4l2Device unused;
+    const std::size_t peak_before = peak_rss_bytes();
+    auto src = camera::open_camera_source(unused, {.device = "mock:" + dir.path().string()});
+    ASSERT_FALSE(src);
+    EXPECT_EQ(src.error().message, "camera: mock:" + dir.path().string() + ": " + bomb +
+                                       " is 16000x16000, the first image is 8x4; all must match");
+    EXPECT_LT(peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
 }
 
 // Shutdown while a mock folder is decoded on the camera worker: the decoding stops between two images.
