@@ -3,6 +3,7 @@
 // the end-to-end test and on machines without one. Renaming or deleting the image or folder unplugs
 // it: the next frame due is an error, as a V4L2 device that vanished from /dev is (the soak test's seam).
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,6 +78,32 @@ private:
 };
 
 }  // namespace
+
+std::string mock_source_stamp(const std::string& path) {
+    namespace fs = std::filesystem;
+    const auto stamp_of = [](const std::string& name, std::string& out) {
+        struct stat st {};
+        if (::stat(name.c_str(), &st) != 0) {
+            out += fmt::format("{}: {}\n", name, std::strerror(errno));
+            return false;
+        }
+        out += fmt::format("{}: mode {:o} size {} inode {} modified {}.{} changed {}.{}\n", name, st.st_mode,
+                           st.st_size, st.st_ino, st.st_mtim.tv_sec, st.st_mtim.tv_nsec, st.st_ctim.tv_sec,
+                           st.st_ctim.tv_nsec);
+        return S_ISDIR(st.st_mode);
+    };
+    std::string stamp;
+    if (!stamp_of(path, stamp)) return stamp;
+    // A folder: every entry, as open_mock_source lists them; sorted, as listing order is not stable.
+    std::vector<std::string> entries;
+    std::error_code ec;
+    for (fs::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec))
+        entries.push_back(it->path().string());
+    if (ec) stamp += fmt::format("cannot list: {}\n", ec.message());
+    std::sort(entries.begin(), entries.end());
+    for (const std::string& entry : entries) stamp_of(entry, stamp);
+    return stamp;
+}
 
 Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps,
                                                        std::stop_token stop) {

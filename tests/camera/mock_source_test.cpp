@@ -124,6 +124,35 @@ TEST(MockSource, RenamedFolderIsAnUnplugAndComesBackWhenReopened) {
     EXPECT_EQ(std::to_integer<int>((**frame).data[0]), 30);
 }
 
+// A failed mock is retried only when this changes (systems/camera_system.cpp): it must change with every
+// edit a user makes to the folder, and stay put while nothing does.
+TEST(MockSource, StampChangesWhenTheFolderOrItsFilesDoAndOnlyThen) {
+    TempDir dir;
+    const auto folder = dir / "camera";
+    std::filesystem::create_directory(folder);
+    write_solid((folder / "a.png").string(), 10);
+    const std::string first = camera::mock_source_stamp(folder.string());
+    EXPECT_EQ(camera::mock_source_stamp(folder.string()), first) << "nothing changed";
+    EXPECT_NE(first.find("a.png"), std::string::npos) << first;
+
+    write_solid((folder / "b.png").string(), 20);  // one more image
+    const std::string added = camera::mock_source_stamp(folder.string());
+    EXPECT_NE(added, first);
+
+    std::ofstream(folder / "b.png", std::ios::binary | std::ios::app) << "x";  // rewritten in place
+    const std::string grown = camera::mock_source_stamp(folder.string());
+    EXPECT_NE(grown, added);
+
+    std::filesystem::rename(folder, dir / "away");
+    const std::string gone = camera::mock_source_stamp(folder.string());
+    EXPECT_NE(gone, grown);
+    EXPECT_NE(gone.find("No such file or directory"), std::string::npos) << gone;
+
+    EXPECT_EQ(camera::source_stamp({.device = "mock:" + folder.string()}),
+              "mock:" + folder.string() + "\n" + gone);
+    EXPECT_EQ(camera::source_stamp({.device = "/dev/video0"}), "") << "a V4L2 device is always retried";
+}
+
 TEST(MockSource, MissingPathIsAnAssetErrorNamingIt) {
     FakeV4l2Device unused;
     auto src = camera::open_camera_source(unused, {.device = "mock:/nonexistent/room.png"});
