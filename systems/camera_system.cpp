@@ -28,11 +28,18 @@ void start_job(CameraFeed& feed, std::unique_ptr<camera::CameraSource> closing,
                std::optional<camera::CaptureRequest> request) {
     // shared_ptr only because std::function wants a copyable callable; the job holds the one reference.
     feed.worker.submit([io = feed.io, old = std::shared_ptr<camera::CameraSource>(std::move(closing)),
-                        request = std::move(request)](std::stop_token stop) mutable {
+                        request = std::move(request),
+                        failed_stamp = feed.failed_stamp](std::stop_token stop) mutable {
         old.reset();
         if (!request) return CameraOpening{};
+        // Unchanged since it failed, it would fail the same way: a mock folder of images too large or of
+        // mismatched sizes is not read again every second. `opened` stays empty: nothing was tried.
+        std::string stamp = camera::source_stamp(*request);
+        if (!stamp.empty() && stamp == failed_stamp)
+            return CameraOpening{.request = std::move(*request), .stamp = std::move(stamp)};
         auto opened = camera::open_camera_source(*io, *request, std::move(stop));
-        return CameraOpening{.request = std::move(*request), .opened = std::move(opened)};
+        return CameraOpening{
+            .request = std::move(*request), .opened = std::move(opened), .stamp = std::move(stamp)};
     });
 }
 
@@ -53,20 +60,27 @@ void start_open(CameraFeed& feed, camera::CaptureRequest request) {
 
 // The worker's answer: a source to stream, or a failure logged once per distinct message.
 void collect(CameraFeed& feed, CameraOpening done) {
-    if (!done.opened) return;  // a close only
+    if (!done.opened) return;  // a close only, or a retry skipped as unchanged
+    ++feed.open_attempts;
     auto& opened = *done.opened;
     if (!opened) {
-        if (opened.error().message != feed.last_failure)
-            spdlog::warn("{}; reflecting the cubemap, retrying every {:g} s", opened.error().message,
-                         camera_retry_seconds);
-        else
+        if (opened.error().message != feed.last_failure) {
+            if (done.stamp.empty())
+                spdlog::warn("{}; reflecting the cubemap, retrying every {:g} s", opened.error().message,
+                             camera_retry_seconds);
+            else
+                spdlog::warn("{}; reflecting the cubemap, retrying when its files change",
+                             opened.error().message);
+        } else
             spdlog::debug("{}", opened.error().message);
         feed.last_failure = opened.error().message;
+        feed.failed_stamp = std::move(done.stamp);
         return;
     }
     feed.source = std::move(opened).value();
     feed.request = std::move(done.request);
     feed.last_failure.clear();
+    feed.failed_stamp.clear();
     spdlog::info("camera: streaming {}", feed.source->describe());
 }
 

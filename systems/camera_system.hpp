@@ -2,7 +2,8 @@
 // The camera feed (input stage): opens the source that environment.camera_device names while
 // environment.source = camera, polls it once per frame without blocking, and hands the newest frame
 // to the GPU upload. Faults never stop the display: no device, or one that vanishes, means the
-// cubemap, a one-line warning, and a new attempt every `camera_retry_seconds` until it streams again.
+// cubemap, a one-line warning, and a new attempt every `camera_retry_seconds` until it streams again;
+// a mock:PATH whose open failed is tried again only once its files have changed (camera::source_stamp).
 // A change of device, size, rate or format reopens it; source = cubemap closes it.
 //
 // Opening and closing block (a UVC camera's VIDIOC_S_FMT or VIDIOC_STREAMON can take seconds, STREAMOFF
@@ -34,6 +35,7 @@ inline constexpr double camera_retry_seconds = 1.0;
 struct CameraOpening {
     camera::CaptureRequest request;
     std::optional<Result<std::unique_ptr<camera::CameraSource>>> opened;
+    std::string stamp;  // camera::source_stamp(request), taken before the open
 };
 
 // Resource.
@@ -44,8 +46,12 @@ struct CameraFeed {
     double now = 0.0;                // frame-loop time, seconds
     double retry_at = 0.0;
     std::string last_failure;  // said once; repeats go to the debug log
-    std::uint64_t frames = 0;  // delivered since start-up
-    std::uint64_t losses = 0;  // times a streaming source went away
+    // The source_stamp of the last failed open: a retry that finds the same stamp is not tried, so a
+    // mock folder that was refused is not read again until its files change (issue 15).
+    std::string failed_stamp;
+    std::uint64_t open_attempts = 0;  // opens tried on the worker (retries skipped as unchanged not counted)
+    std::uint64_t frames = 0;         // delivered since start-up
+    std::uint64_t losses = 0;         // times a streaming source went away
     bool streaming() const { return source != nullptr; }
 
     camera::SourceCounters closed_faults;  // of the sources closed so far

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <system_error>
+#include <utility>
 
 #include "assets/image_io.hpp"
 
@@ -37,34 +38,51 @@ std::string short_name(const fs::path& path, const fs::path& beside) {
     return path.parent_path() == beside.parent_path() ? path.filename().string() : path.string();
 }
 
+// GL requires square faces of one size; say which file breaks that and against what. `sizes` are
+// width, height pairs in face order.
+Result<void> check_face_sizes(const std::array<std::string, 6>& paths,
+                              const std::array<std::pair<int, int>, 6>& sizes) {
+    const auto [w0, h0] = sizes[0];
+    if (w0 != h0)
+        return make_error(ExitCode::Asset,
+                          "cubemap: {} is {}x{}: all six faces must be square and the same size", paths[0],
+                          w0, h0);
+    for (std::size_t i = 1; i < paths.size(); ++i) {
+        const auto [w, h] = sizes[i];
+        if (w != w0 || h != h0)
+            return make_error(
+                ExitCode::Asset,
+                "cubemap: {} is {}x{} but {} is {}x{}: all six faces must be square and the same size",
+                paths[i], w, h, short_name(paths[0], paths[i]), w0, h0);
+    }
+    return {};
+}
+
 Result<CubeImages> load_faces(const std::array<std::string, 6>& paths, std::string source) {
+    // Every header first: a face of the wrong size is refused before any face is decoded.
+    std::array<std::pair<int, int>, 6> sizes;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        auto header = probe_color_image(paths[i]);
+        if (!header) return header.error();
+        sizes[i] = {header->width, header->height};
+    }
+    if (auto fit = check_face_sizes(paths, sizes); !fit) return fit.error();
+
     CubeImages cube;
     cube.source = std::move(source);
     for (std::size_t i = 0; i < paths.size(); ++i) {
         auto image = read_color_image(paths[i]);
         if (!image) return image.error();
         cube.faces[i] = std::move(image).value();
+        sizes[i] = {cube.faces[i].width, cube.faces[i].height};
     }
+    // Again on the pixels, should a file have changed since its header was read.
+    if (auto fit = check_face_sizes(paths, sizes); !fit) return fit.error();
     // One HDR face makes the cube HDR: the 8-bit ones are decoded to linear to join it.
     const bool any_hdr = std::any_of(cube.faces.begin(), cube.faces.end(),
                                      [](const Image& f) { return f.format == PixelFormat::RGBA32F; });
     if (any_hdr)
         for (Image& face : cube.faces) face = to_linear_float(face);
-
-    // GL requires square faces of one size; say which file breaks that and against what.
-    const Image& first = cube.faces[0];
-    if (first.width != first.height)
-        return make_error(ExitCode::Asset,
-                          "cubemap: {} is {}x{}: all six faces must be square and the same size", paths[0],
-                          first.width, first.height);
-    for (std::size_t i = 1; i < paths.size(); ++i) {
-        const Image& face = cube.faces[i];
-        if (face.width != first.width || face.height != first.height)
-            return make_error(
-                ExitCode::Asset,
-                "cubemap: {} is {}x{} but {} is {}x{}: all six faces must be square and the same size",
-                paths[i], face.width, face.height, short_name(paths[0], paths[i]), first.width, first.height);
-    }
     return cube;
 }
 

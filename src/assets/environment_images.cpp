@@ -29,25 +29,36 @@ Result<std::array<std::string, 6>> split_six(const std::string& spec) {
     return paths;
 }
 
-// One image: a panorama or a cross, told apart by its proportions.
+// One image is a panorama (2:1) or a cube cross (4:3 or 3:4); anything else is refused.
+Result<void> check_single_image_shape(const std::string& path, int w, int h) {
+    if (cross_layout(w, h) != CrossLayout::None || w == 2 * h) return {};
+    return make_error(
+        ExitCode::Asset,
+        "environment.image: {} is {}x{}: expected an equirectangular panorama twice as wide as high "
+        "(2:1, e.g. 2048x1024), or a cube cross (4:3 or 3:4)",
+        path, w, h);
+}
+
+// One image: a panorama or a cross, told apart by its proportions. The shape is checked on the header
+// first, so a wrong file is refused without decoding it; then again on the pixels, should the file
+// have changed in between.
 Result<EnvironmentImages> load_single_image(const std::string& path) {
+    auto header = probe_color_image(path);
+    if (!header) return header.error();
+    if (auto shape = check_single_image_shape(path, header->width, header->height); !shape)
+        return shape.error();
     auto image = read_color_image(path);
     if (!image) return image.error();
+    if (auto shape = check_single_image_shape(path, image->width, image->height); !shape)
+        return shape.error();
     EnvironmentImages env;
     env.source = path;
-    const int w = image->width, h = image->height;
-    if (const CrossLayout layout = cross_layout(w, h); layout != CrossLayout::None) {
+    if (const CrossLayout layout = cross_layout(image->width, image->height); layout != CrossLayout::None) {
         auto cube = split_cube_cross(*image, layout, path);
         if (!cube) return cube.error();
         env.faces = std::move(cube).value();
         return env;
     }
-    if (w != 2 * h)
-        return make_error(
-            ExitCode::Asset,
-            "environment.image: {} is {}x{}: expected an equirectangular panorama twice as wide as high "
-            "(2:1, e.g. 2048x1024), or a cube cross (4:3 or 3:4)",
-            path, w, h);
     env.panorama = std::move(image).value();
     return env;
 }

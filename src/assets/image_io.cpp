@@ -81,7 +81,32 @@ Result<Image> read_through_module(const std::string& path, PuddleImageWant want)
     return std::move(allocation.image);
 }
 
+Result<ImageInfo> probe_through_module(const std::string& path, PuddleImageWant want) {
+    if (auto readable = check_readable(path); !readable) return readable.error();
+    auto module = image_module();
+    if (!module)
+        return make_error(ExitCode::Asset, "image: {}: cannot read: {}", path, module.error().message);
+    PuddleImageInfo header{};
+    char why[512] = "";
+    if ((*module)->probe(path.c_str(), &header, why, sizeof why) == 0)
+        return make_error(ExitCode::Asset, "image: {}: {}", path, why);
+    const bool as_float = want == PUDDLE_IMAGE_RGBA32F || (want == PUDDLE_IMAGE_AS_STORED && header.is_float);
+    const ImageInfo info{.width = header.width,
+                         .height = header.height,
+                         .format = as_float ? PixelFormat::RGBA32F : PixelFormat::RGBA8};
+    if (auto fits = check_image_size(path, info.width, info.height, info.format); !fits) return fits.error();
+    return info;
+}
+
 }  // namespace
+
+Result<ImageInfo> probe_image(const std::string& path, PixelFormat want) {
+    return probe_through_module(path, want == PixelFormat::RGBA8 ? PUDDLE_IMAGE_RGBA8 : PUDDLE_IMAGE_RGBA32F);
+}
+
+Result<ImageInfo> probe_color_image(const std::string& path) {
+    return probe_through_module(path, PUDDLE_IMAGE_AS_STORED);
+}
 
 Result<Image> read_image(const std::string& path, PixelFormat want) {
     return read_through_module(path, want == PixelFormat::RGBA8 ? PUDDLE_IMAGE_RGBA8 : PUDDLE_IMAGE_RGBA32F);

@@ -12,19 +12,26 @@ extern "C" {
 #endif
 
 /* Bumped whenever a type or function below changes; puddle refuses a module of another version. */
-#define PUDDLE_IMAGE_MODULE_ABI_VERSION 1
+#define PUDDLE_IMAGE_MODULE_ABI_VERSION 2
 /* The one exported symbol: returns the module's table of functions. */
 #define PUDDLE_IMAGE_MODULE_ENTRY "puddle_image_module"
 
 enum PuddleImageWant {
-    PUDDLE_IMAGE_RGBA8 = 0,   /* 8 bits per channel */
-    PUDDLE_IMAGE_RGBA32F = 1, /* float, the file's values */
+    PUDDLE_IMAGE_RGBA8 = 0,    /* 8 bits per channel */
+    PUDDLE_IMAGE_RGBA32F = 1,  /* float, the file's values */
     PUDDLE_IMAGE_AS_STORED = 2 /* float for float files (.hdr, .exr, float TIFF), else 8 bits */
 };
 
 /* Called once the size is known: returns width * height * 4 channels of the given type (float when
  * is_float, else unsigned char), tightly packed, top row first; or NULL to give up. */
 typedef void* (*PuddleImageAlloc)(void* context, int width, int height, int is_float);
+
+/* What a file's header says, read without decoding a pixel. */
+struct PuddleImageInfo {
+    int width;    /* pixels */
+    int height;   /* pixels */
+    int is_float; /* 1 for float files (.hdr, .exr, float TIFF): PUDDLE_IMAGE_AS_STORED reads them as float */
+};
 
 struct PuddleImageModule {
     int abi_version; /* PUDDLE_IMAGE_MODULE_ABI_VERSION */
@@ -33,6 +40,10 @@ struct PuddleImageModule {
      * (without the path), e.g. "cannot decode: ...". */
     int (*read)(const char* path, int want, PuddleImageAlloc alloc, void* context, char* error,
                 size_t error_size);
+    /* Opens `path` and reads its header only (no pixel is decoded, no pixel buffer allocated) into
+     * `info`, so that callers can refuse a size or shape before paying for the decode. Returns 1 on
+     * success; on failure 0 and one line in `error`, as `read` does. Since version 2. */
+    int (*probe)(const char* path, struct PuddleImageInfo* info, char* error, size_t error_size);
 };
 
 typedef const struct PuddleImageModule* (*PuddleImageModuleEntry)(void);

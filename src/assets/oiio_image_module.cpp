@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,21 +63,46 @@ bool is_float_type(OIIO::TypeDesc type) {
            type.basetype == OIIO::TypeDesc::DOUBLE;
 }
 
-int read(const char* path, int want, PuddleImageAlloc alloc, void* context, char* error,
-         std::size_t error_size) {
+// Opens `path` and checks its header; ImageInput::open reads the header only, no pixels. Null, with
+// `why` set, for a file that cannot be opened or is no flat 2D image.
+std::unique_ptr<OIIO::ImageInput> open_checked(const char* path, std::string& why) {
     // Textures keep straight alpha: without this hint OIIO premultiplies PNG/TGA colour by alpha.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) return fail(error, error_size, "cannot read: " + one_line(OIIO::geterror()));
-
+    if (!in) {
+        why = "cannot read: " + one_line(OIIO::geterror());
+        return nullptr;
+    }
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        return fail(error, error_size,
-                    "empty image (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) + ", " +
-                        std::to_string(spec.nchannels) + " channels)");
-    if (spec.depth > 1 || spec.deep)
-        return fail(error, error_size, "volume and deep images are not supported");
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+        why = "empty image (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) + ", " +
+              std::to_string(spec.nchannels) + " channels)";
+        return nullptr;
+    }
+    if (spec.depth > 1 || spec.deep) {
+        why = "volume and deep images are not supported";
+        return nullptr;
+    }
+    return in;
+}
+
+int probe(const char* path, PuddleImageInfo* info, char* error, std::size_t error_size) {
+    std::string why;
+    auto in = open_checked(path, why);
+    if (!in) return fail(error, error_size, why);
+    const OIIO::ImageSpec& spec = in->spec();
+    *info = PuddleImageInfo{
+        .width = spec.width, .height = spec.height, .is_float = is_float_type(spec.format) ? 1 : 0};
+    return 1;
+}
+
+int read(const char* path, int want, PuddleImageAlloc alloc, void* context, char* error,
+         std::size_t error_size) {
+    std::string why;
+    auto in = open_checked(path, why);
+    if (!in) return fail(error, error_size, why);
+    const OIIO::ImageSpec& spec = in->spec();
 
     const bool as_float =
         want == PUDDLE_IMAGE_RGBA32F || (want == PUDDLE_IMAGE_AS_STORED && is_float_type(spec.format));
@@ -120,9 +146,20 @@ int read_noexcept(const char* path, int want, PuddleImageAlloc alloc, void* cont
     }
 }
 
+int probe_noexcept(const char* path, PuddleImageInfo* info, char* error, std::size_t error_size) noexcept {
+    try {
+        return probe(path, info, error, error_size);
+    } catch (const std::exception& e) {
+        return fail(error, error_size, std::string("cannot read: ") + e.what());
+    } catch (...) {
+        return fail(error, error_size, "cannot read: unknown error");
+    }
+}
+
 constexpr PuddleImageModule module{
     .abi_version = PUDDLE_IMAGE_MODULE_ABI_VERSION,
     .read = read_noexcept,
+    .probe = probe_noexcept,
 };
 
 }  // namespace

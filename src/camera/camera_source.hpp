@@ -43,6 +43,14 @@ Result<std::unique_ptr<CameraSource>> open_v4l2_source(V4l2Io& io, const Capture
 Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, double fps,
                                                        std::stop_token stop = {});
 
+// What a retry would find changed in a "mock:PATH", read without opening any image: the path's type, and
+// for it (a folder: for it and each entry) the name, size, inode and modification and change times; or
+// why it cannot be read (a missing path). Two equal stamps mean an open would fail the same way again.
+std::string mock_source_stamp(const std::string& path);
+// The stamp of what `request` opens: mock_source_stamp for "mock:PATH", prefixed with the device; empty
+// for a V4L2 device, whose open can succeed without anything on disk changing (a busy camera freed).
+std::string source_stamp(const CaptureRequest& request);
+
 // request.device "mock:PATH" opens the mock, anything else a V4L2 device through io. Blocks: a UVC
 // camera's VIDIOC_S_FMT or VIDIOC_STREAMON can take seconds, a mock folder as long to decode, so the
 // frame loop calls this on a worker thread (systems/camera_system.hpp); `stop` reaches the mock's decoding.

@@ -93,4 +93,10 @@ Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const Captu
     return open_v4l2_source(io, request);
 }
 
+std::string source_stamp(const CaptureRequest& request) {
+    constexpr std::string_view mock = "mock:";
+    if (!request.device.starts_with(mock)) return {};
+    return request.device + "\n" + mock_source_stamp(request.device.substr(mock.size()));
+}
+
 }  // namespace puddle::camera

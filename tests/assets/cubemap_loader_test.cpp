@@ -10,6 +10,7 @@
 #include <string>
 
 #include "assets/image_io.hpp"
+#include "support/image_bomb.hpp"
 
 namespace puddle::assets {
 namespace {
@@ -125,6 +126,21 @@ TEST_F(CubemapLoaderTest, FaceOfAnotherSizeNamesBothFiles) {
     EXPECT_EQ(cube.error().message,
               "cubemap: " + path("nx.png") +
                   " is 8x8 but px.png is 16x16: all six faces must be square and the same size");
+}
+
+// Issue 15: every face's header is read before any face is decoded. -Z claims 16000x16000 over a few
+// bytes; decoding the faces first allocated its 976 MiB and failed in the decoder instead.
+TEST_F(CubemapLoaderTest, AFaceOfAnotherSizeIsRefusedFromItsHeaderWithoutDecoding) {
+    write_faces(8, 8);
+    fs::remove(path("nz.jpeg"));
+    std::ofstream(path("nz.png"), std::ios::binary) << test::png_claiming(16000, 16000);
+    const std::size_t peak_before = test::peak_rss_bytes();
+    auto cube = load_cubemap_folder(dir_.string());
+    ASSERT_FALSE(cube.ok());
+    EXPECT_EQ(cube.error().message,
+              "cubemap: " + path("nz.png") +
+                  " is 16000x16000 but px.png is 8x8: all six faces must be square and the same size");
+    EXPECT_LT(test::peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
 }
 
 TEST_F(CubemapLoaderTest, NonSquareFacesAreRejected) {

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "assets/image_io.hpp"
+#include "support/image_bomb.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::assets {
@@ -98,6 +99,21 @@ TEST(EnvironmentImages, PanoramaThatIsNotTwoToOneNamesPathAndShape) {
         "environment.image: " + path +
             " is 300x200: expected an equirectangular panorama twice as wide as high (2:1, e.g. 2048x1024), "
             "or a cube cross (4:3 or 3:4)");
+}
+
+// Issue 15: the shape is the header's to decide. This PNG claims 16000x16000 (976 MiB of pixels) over a
+// few bytes; decoding it first gave the decoder's error after allocating gigabytes, not this one.
+TEST(EnvironmentImages, ASkyOfTheWrongShapeIsRefusedFromItsHeaderWithoutDecoding) {
+    TempDir dir;
+    const std::string path = dir.write("bomb.png", test::png_claiming(16000, 16000));
+    const std::size_t peak_before = test::peak_rss_bytes();
+    auto env = load_environment_images(path);
+    ASSERT_FALSE(env.ok());
+    EXPECT_EQ(env.error().message, "environment.image: " + path +
+                                       " is 16000x16000: expected an equirectangular panorama twice as wide "
+                                       "as high (2:1, e.g. 2048x1024), "
+                                       "or a cube cross (4:3 or 3:4)");
+    EXPECT_LT(test::peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
 }
 
 TEST(EnvironmentImages, CorruptFileNamesThePath) {

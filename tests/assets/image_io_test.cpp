@@ -9,6 +9,7 @@
 #include <string>
 
 #include "assets/image_limits.hpp"
+#include "support/image_bomb.hpp"
 
 namespace puddle::assets {
 namespace {
@@ -148,6 +149,36 @@ TEST_F(ImageIoTest, MoreDecodedBytesThanTheLimitAreRefusedBeforeDecoding) {
     EXPECT_EQ(img.error().message,
               "image: " + path("huge.hdr") +
                   ": 12000x12000 RGBA32F needs 2197 MiB decoded, more than the 1024 MiB limit");
+}
+
+TEST_F(ImageIoTest, ProbeGivesTheHeadersSizeWithoutDecoding) {
+    write_bytes("bomb.png", test::png_claiming(16000, 16000));
+    const std::size_t peak_before = test::peak_rss_bytes();
+    auto info = probe_image(path("bomb.png"));
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    EXPECT_EQ(info->width, 16000);
+    EXPECT_EQ(info->height, 16000);
+    EXPECT_EQ(info->format, PixelFormat::RGBA8);
+    EXPECT_EQ(info->decoded_bytes(), std::size_t{16000} * 16000 * 4);
+    EXPECT_LT(test::peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
+    // The pixels themselves are broken: only a decode finds that out.
+    EXPECT_FALSE(read_image(path("bomb.png"), PixelFormat::RGBA8).ok());
+}
+
+TEST_F(ImageIoTest, ProbeOfAColorImageSaysFloatForHdrAndAppliesTheLimits) {
+    write_bytes("wide.hdr", hdr_header(max_image_side + 1, 2));
+    auto wide = probe_color_image(path("wide.hdr"));
+    ASSERT_FALSE(wide.ok());
+    EXPECT_EQ(wide.error().message, "image: " + path("wide.hdr") + ": " + std::to_string(max_image_side + 1) +
+                                        "x2 is too large: at most " + std::to_string(max_image_side) +
+                                        " pixels a side");
+    write_bytes("sky.hdr", hdr_header(64, 32));
+    auto sky = probe_color_image(path("sky.hdr"));
+    ASSERT_TRUE(sky.ok()) << sky.error().message;
+    EXPECT_EQ(sky->width, 64);
+    EXPECT_EQ(sky->height, 32);
+    EXPECT_EQ(sky->format, PixelFormat::RGBA32F);
+    EXPECT_EQ(probe_image(path("sky.hdr"))->format, PixelFormat::RGBA8) << "read_image's default converts";
 }
 
 TEST(ImageLimits, TheLimitsThemselvesAreAllowed) {

@@ -31,6 +31,7 @@ TEST(ImageModule, LoadsAndSpeaksThisInterfaceVersion) {
     ASSERT_TRUE(module.ok()) << module.error().message;
     EXPECT_EQ((*module)->abi_version, PUDDLE_IMAGE_MODULE_ABI_VERSION);
     EXPECT_NE((*module)->read, nullptr);
+    EXPECT_NE((*module)->probe, nullptr) << "version 2 reads headers alone";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "assets/image_io.hpp"
 #include "camera/camera_source.hpp"
 #include "camera/fake_v4l2_device.hpp"
+#include "support/image_bomb.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::test {
@@ -47,6 +48,35 @@ TEST(MockSource, AFolderOfTooManyImagesIsRefusedBeforeDecodingAny) {
     EXPECT_EQ(src.error().code, ExitCode::Asset);
     EXPECT_EQ(src.error().message, "camera: mock:" + dir.path().string() +
                                        ": the folder holds more than 256 images; the limit is 256");
+}
+
+// Issue 15: the folder's limits are checked on the headers, before any image is decoded. The PNG claims
+// 16000x16000 (976 MiB as RGBA8) over a few bytes: decoded first, it cost 2 GB of peak memory and ended
+// in the decoder's error rather than the limit's.
+TEST(MockSource, AnImageOverTheFolderLimitIsRefusedFromItsHeaderWithoutDecoding) {
+    TempDir dir;
+    const std::string bomb = dir.write("bomb.png", png_claiming(16000, 16000));
+    FakeV4l2Device unused;
+    const std::size_t peak_before = peak_rss_bytes();
+    auto src = camera::open_camera_source(unused, {.device = "mock:" + bomb});
+    ASSERT_FALSE(src);
+    EXPECT_EQ(src.error().code, ExitCode::Asset);
+    EXPECT_EQ(src.error().message, "camera: mock:" + bomb + ": the images up to " + bomb +
+                                       " take 976 MiB decoded; the limit is 256 MiB");
+    EXPECT_LT(peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
+}
+
+TEST(MockSource, AnImageOfAnotherSizeIsRefusedFromItsHeaderWithoutDecoding) {
+    TempDir dir;
+    write_solid((dir / "0.png").string(), 10);
+    const std::string bomb = dir.write("a.png", png_claiming(16000, 16000));
+    FakeV4l2Device unused;
+    const std::size_t peak_before = peak_rss_bytes();
+    auto src = camera::open_camera_source(unused, {.device = "mock:" + dir.path().string()});
+    ASSERT_FALSE(src);
+    EXPECT_EQ(src.error().message, "camera: mock:" + dir.path().string() + ": " + bomb +
+                                       " is 16000x16000, the first image is 8x4; all must match");
+    EXPECT_LT(peak_rss_bytes() - peak_before, std::size_t{64} << 20) << "no pixel buffer was allocated";
 }
 
 // Shutdown while a mock folder is decoded on the camera worker: the decoding stops between two images.
@@ -92,6 +122,35 @@ TEST(MockSource, RenamedFolderIsAnUnplugAndComesBackWhenReopened) {
     auto frame = (*back)->poll(0.2);
     ASSERT_TRUE(frame && frame->has_value());
     EXPECT_EQ(std::to_integer<int>((**frame).data[0]), 30);
+}
+
+// A failed mock is retried only when this changes (systems/camera_system.cpp): it must change with every
+// edit a user makes to the folder, and stay put while nothing does.
+TEST(MockSource, StampChangesWhenTheFolderOrItsFilesDoAndOnlyThen) {
+    TempDir dir;
+    const auto folder = dir / "camera";
+    std::filesystem::create_directory(folder);
+    write_solid((folder / "a.png").string(), 10);
+    const std::string first = camera::mock_source_stamp(folder.string());
+    EXPECT_EQ(camera::mock_source_stamp(folder.string()), first) << "nothing changed";
+    EXPECT_NE(first.find("a.png"), std::string::npos) << first;
+
+    write_solid((folder / "b.png").string(), 20);  // one more image
+    const std::string added = camera::mock_source_stamp(folder.string());
+    EXPECT_NE(added, first);
+
+    std::ofstream(folder / "b.png", std::ios::binary | std::ios::app) << "x";  // rewritten in place
+    const std::string grown = camera::mock_source_stamp(folder.string());
+    EXPECT_NE(grown, added);
+
+    std::filesystem::rename(folder, dir / "away");
+    const std::string gone = camera::mock_source_stamp(folder.string());
+    EXPECT_NE(gone, grown);
+    EXPECT_NE(gone.find("No such file or directory"), std::string::npos) << gone;
+
+    EXPECT_EQ(camera::source_stamp({.device = "mock:" + folder.string()}),
+              "mock:" + folder.string() + "\n" + gone);
+    EXPECT_EQ(camera::source_stamp({.device = "/dev/video0"}), "") << "a V4L2 device is always retried";
 }
 
 TEST(MockSource, MissingPathIsAnAssetErrorNamingIt) {

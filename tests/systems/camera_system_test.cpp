@@ -7,10 +7,14 @@
 #include <linux/videodev2.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <thread>
 
+#include "assets/image_io.hpp"
 #include "camera/fake_v4l2_device.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/image_bomb.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::test {
@@ -128,6 +132,32 @@ TEST(CameraFeed, FallsBackToTheCubemapAndRecoversByItself) {
     const double resumed = rig.until([&] { return rig.env().reflection() != nullptr; }, 1.5);
     EXPECT_GE(resumed, 0.0) << "streaming did not resume within 1.5 s";
     EXPECT_EQ(rig.dev.opens(), 2);
+}
+
+// Review 15, finding 6: a live mock folder that failed was read again every second, for ever. Now it is
+// tried again only once its files change, and then it streams.
+TEST(CameraFeed, AFailedMockFolderIsTriedAgainOnlyWhenItsFilesChange) {
+    TempDir dir;
+    const auto folder = dir / "camera";
+    std::filesystem::create_directory(folder);
+    ASSERT_TRUE(assets::write_png((folder / "0.png").string(), assets::Image::make(8, 4)));
+    std::ofstream(folder / "a.png", std::ios::binary) << png_claiming(16000, 16000);  // does not match
+    Rig rig;
+    rig.engine = make_engine(
+        make_params({"environment.source=cubemap", "environment.camera_device=mock:" + folder.string()}),
+        {96, 54});
+    ASSERT_TRUE(rig.engine);
+    rig.engine->params().set(params::ParamId::environment_source, std::string("camera"),
+                             params::ParamSource::CommandLine);
+    for (int i = 0; i < 100; ++i) rig.frame();  // 3.3 s: three retries were due
+    EXPECT_FALSE(rig.feed().streaming());
+    EXPECT_NE(rig.feed().last_failure.find("all must match"), std::string::npos) << rig.feed().last_failure;
+    EXPECT_EQ(rig.feed().open_attempts, 1u) << "the unchanged folder is not read again";
+
+    ASSERT_TRUE(assets::write_png((folder / "a.png").string(), assets::Image::make(8, 4)));  // fixed
+    const double found = rig.until([&] { return rig.feed().streaming(); }, 1.5);
+    EXPECT_GE(found, 0.0) << "the fixed folder did not stream within 1.5 s";
+    EXPECT_EQ(rig.feed().open_attempts, 2u);
 }
 
 TEST(CameraFeed, SourceCubemapClosesTheDeviceAndChangedSettingsReopenIt) {
