@@ -2,12 +2,11 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <spdlog/spdlog.h>
 
+#include "systems/camera_basis.hpp"
 #include "systems/param_uniforms.hpp"
 
 namespace puddle::systems {
@@ -58,14 +57,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     if (!pipeline) return;
 
     // Everything uniform across the screen is worked out here once, not per pixel.
-    const glm::vec3 eye = params.v3(ParamId::camera_position);
-    glm::vec3 forward = params.v3(ParamId::camera_target) - eye;
-    forward = glm::length(forward) > 1e-6f ? glm::normalize(forward) : glm::vec3(0, 0, -1);
-    glm::vec3 right = glm::cross(forward, glm::vec3(0, 1, 0));
-    right = glm::length(right) > 1e-6f ? glm::normalize(right) : glm::vec3(1, 0, 0);  // looking straight down
-    const glm::vec3 up = glm::cross(right, forward);
-    const float tan_half = std::tan(glm::radians(params.f(ParamId::camera_fov)) * 0.5f);
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
+    const CameraBasis cam = camera_basis(params.v3(ParamId::camera_position), params.v3(ParamId::camera_target),
+                                         params.f(ParamId::camera_fov), aspect);
     const float a = params.f(ParamId::environment_rotation);
     // Column-major rotation about +Y.
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
@@ -76,10 +70,10 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
     set_param_uniforms(pass, pipeline->params, params);
-    pass.set("u_cam_forward", forward)
-        .set("u_cam_right", right)
-        .set("u_cam_up", up)
-        .set("u_cam_scale", glm::vec2(tan_half * aspect, tan_half))
+    pass.set("u_cam_forward", cam.forward)
+        .set("u_cam_right", cam.right)
+        .set("u_cam_up", cam.up)
+        .set("u_cam_scale", cam.scale)
         .set("u_env_matrix", env_matrix)
         .set("u_env_scale", std::exp2(params.f(ParamId::environment_exposure)))
         .set("u_slope_scale", static_cast<float>(surface.resolution) * 0.5f /
