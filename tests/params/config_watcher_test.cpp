@@ -1,17 +1,28 @@
 // inotify on the config's folder: in-place writes, editors' rename-over, delete and re-create, and
-// configs that are symbolic links (the target edited, the link re-pointed, chains of links).
+// configs that are symbolic links (the target edited, the link re-pointed, chains of links, a linked
+// folder flipped), folders removed and made again, and things that are not files in the config's place.
 #include "params/config_watcher.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 
+#include "params/config_loader.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::params {
+
+// Names in failure messages instead of bytes.
+static void PrintTo(ConfigWatcher::Change c, std::ostream* os) {
+    static constexpr const char* names[] = {"None", "Written", "Removed"};
+    *os << names[static_cast<int>(c)];
+}
+
 namespace {
 
 using Change = ConfigWatcher::Change;
@@ -153,6 +164,134 @@ TEST(ConfigWatcher, AFileReplacedByALinkIsFollowed) {
     EXPECT_EQ(w->poll(), Change::Written);
     write_file(dir / "managed/puddle.toml", "[rain]\ndrop_count = 7\n");
     EXPECT_EQ(w->poll(), Change::Written) << "the new link's target is watched from now on";
+}
+
+// `rm -rf` of the config's folder, then `mkdir` and a new file: reloads, and later edits too.
+TEST(ConfigWatcher, AFolderRemovedAndMadeAgainIsWatchedAgain) {
+    test::TempDir dir;
+    const auto folder = dir / "cf";
+    std::filesystem::create_directories(folder);
+    const auto path = folder / "p.toml";
+    write_file(path, "[rain]\ndrop_count = 30\n");
+    auto w = ConfigWatcher::watch(path.string());
+    ASSERT_TRUE(w) << w.error().message;
+    std::filesystem::remove_all(folder);
+    EXPECT_EQ(w->poll(), Change::Removed);
+    std::filesystem::create_directory(folder);
+    EXPECT_EQ(w->poll(), Change::None) << "the folder is back, the file is not: nothing to say again";
+    write_file(path, "[rain]\ndrop_count = 34\n");
+    EXPECT_EQ(w->poll(), Change::Written) << "the file came back in the new folder";
+    write_file(path, "[rain]\ndrop_count = 35\n");
+    EXPECT_EQ(w->poll(), Change::Written) << "and later edits are followed";
+    // All of it between two polls (the folder and the file made before the watcher looks).
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directory(folder);
+    write_file(path, "[rain]\ndrop_count = 36\n");
+    EXPECT_EQ(w->poll(), Change::Written);
+    write_file(path, "[rain]\ndrop_count = 37\n");
+    EXPECT_EQ(w->poll(), Change::Written);
+}
+
+TEST(ConfigWatcher, ALinkedConfigsTargetFolderRemovedAndMadeAgainIsWatchedAgain) {
+    LinkedConfig c;
+    auto w = ConfigWatcher::watch(c.link.string());
+    ASSERT_TRUE(w) << w.error().message;
+    std::filesystem::remove_all(c.opt);
+    EXPECT_EQ(w->poll(), Change::Removed);
+    std::filesystem::create_directory(c.opt);
+    EXPECT_EQ(w->poll(), Change::None);
+    write_file(c.target, "[rain]\ndrop_count = 35\n");
+    EXPECT_EQ(w->poll(), Change::Written) << "the target came back";
+    write_file(c.target, "[rain]\ndrop_count = 36\n");
+    EXPECT_EQ(w->poll(), Change::Written) << "and later edits are followed";
+}
+
+// A release swapped in by renames (`mv app app.old; mv app.new app`): the config's folder is renamed away.
+TEST(ConfigWatcher, AFolderSwappedByRenamesIsFollowed) {
+    test::TempDir dir;
+    std::filesystem::create_directories(dir / "app/etc");
+    std::filesystem::create_directories(dir / "app.new/etc");
+    const auto path = dir / "app/etc/puddle.toml";
+    write_file(path, "[rain]\ndrop_count = 1\n");
+    write_file(dir / "app.new/etc/puddle.toml", "[rain]\ndrop_count = 2\n");
+    auto w = ConfigWatcher::watch(path.string());
+    ASSERT_TRUE(w) << w.error().message;
+    std::filesystem::rename(dir / "app", dir / "app.old");
+    EXPECT_EQ(w->poll(), Change::Removed);
+    std::filesystem::rename(dir / "app.new", dir / "app");
+    EXPECT_EQ(w->poll(), Change::Written) << "the new release's config";
+    write_file(path, "[rain]\ndrop_count = 3\n");
+    EXPECT_EQ(w->poll(), Change::Written);
+    write_file(dir / "app.old/etc/puddle.toml", "[rain]\ndrop_count = 4\n");
+    EXPECT_EQ(w->poll(), Change::None) << "the old release is no longer the config";
+}
+
+// The usual release layout: etc/puddle.toml -> ../rel/current/puddle.toml, rel/current -> v1, flipped.
+TEST(ConfigWatcher, FollowsALinkedFolderInTheChainWhenItIsFlipped) {
+    test::TempDir dir;
+    const auto rel = dir / "rel";
+    std::filesystem::create_directories(rel / "v1");
+    std::filesystem::create_directories(rel / "v2");
+    std::filesystem::create_directories(dir / "etc");
+    write_file(rel / "v1/puddle.toml", "[rain]\ndrop_count = 10\n");
+    write_file(rel / "v2/puddle.toml", "[rain]\ndrop_count = 20\n");
+    std::filesystem::create_directory_symlink("v1", rel / "current");
+    std::filesystem::create_symlink("../rel/current/puddle.toml", dir / "etc/puddle.toml");
+    auto w = ConfigWatcher::watch((dir / "etc/puddle.toml").string());
+    ASSERT_TRUE(w) << w.error().message;
+    repoint(rel / "current", "v2");
+    EXPECT_EQ(w->poll(), Change::Written) << "rel/current now leads to v2";
+    write_file(rel / "v2/puddle.toml", "[rain]\ndrop_count = 21\n");
+    EXPECT_EQ(w->poll(), Change::Written) << "edits of the new real target are seen";
+    write_file(rel / "v1/puddle.toml", "[rain]\ndrop_count = 11\n");
+    EXPECT_EQ(w->poll(), Change::None) << "the old one is no longer the config";
+
+    // Flipped back atomically, as deploy tools do.
+    repoint(rel / "current.new", "v1");
+    EXPECT_EQ(w->poll(), Change::None) << "a new link beside it is not the config yet";
+    const std::string mv =
+        "mv -T '" + (rel / "current.new").string() + "' '" + (rel / "current").string() + "'";
+    ASSERT_EQ(std::system(mv.c_str()), 0) << mv;
+    EXPECT_EQ(w->poll(), Change::Written) << "rel/current leads to v1 again";
+    write_file(rel / "v1/puddle.toml", "[rain]\ndrop_count = 12\n");
+    EXPECT_EQ(w->poll(), Change::Written);
+    write_file(rel / "v2/puddle.toml", "[rain]\ndrop_count = 22\n");
+    EXPECT_EQ(w->poll(), Change::None);
+
+    const auto chain = w->chain();
+    ASSERT_EQ(chain.size(), 3u) << "the config's link, the folder's link and the file";
+    EXPECT_EQ(chain[1].folder, rel.string());
+    EXPECT_EQ(chain[1].name, "current");
+    EXPECT_EQ(chain[2].folder, (rel / "v1").string());
+}
+
+// A FIFO or a folder in the config's place is reported, so that the reload says what it is (and keeps the
+// last good configuration) instead of saying nothing.
+TEST(ConfigWatcher, SomethingThatIsNotAFileInTheConfigsPlaceIsReported) {
+    test::TempDir dir;
+    const std::string path = dir.write("puddle.toml", "[rain]\n");
+    auto w = ConfigWatcher::watch(path);
+    ASSERT_TRUE(w) << w.error().message;
+    std::filesystem::remove(path);
+    EXPECT_EQ(w->poll(), Change::Removed);
+    ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
+    EXPECT_EQ(w->poll(), Change::Written);
+    auto fifo = load_config_file(path);
+    ASSERT_FALSE(fifo);
+    EXPECT_EQ(fifo.error().message, "config: " + path + ": is a FIFO, not a file");
+
+    std::filesystem::remove(path);
+    EXPECT_EQ(w->poll(), Change::Removed);
+    std::filesystem::create_directory(path);
+    EXPECT_EQ(w->poll(), Change::Written);
+    auto folder = load_config_file(path);
+    ASSERT_FALSE(folder);
+    EXPECT_EQ(folder.error().message, "config: " + path + ": is a folder, not a file");
+
+    std::filesystem::remove(path);
+    EXPECT_EQ(w->poll(), Change::Removed);
+    write_file(path, "[rain]\ndrop_count = 3\n");
+    EXPECT_EQ(w->poll(), Change::Written) << "a file again";
 }
 
 TEST(ConfigWatcher, AMissingFolderIsAnErrorNamingIt) {
