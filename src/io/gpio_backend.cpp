@@ -52,7 +52,7 @@ Error gpio_request_error(const LineRequest& r, int err) {
 }
 
 Result<void> check_gpio_spec(std::string_view spec) {
-    if (spec.empty() || spec == "gpiod" || (spec.starts_with("mock:") && spec.size() > 5)) return {};
+    if (spec.empty() || spec == "gpiod" || spec.starts_with("mock:")) return {};  // "mock:": no script
     return make_error(ExitCode::Config, "--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO of line changes)",
                       spec);
 }

@@ -244,7 +244,7 @@ TEST(GpioBackendSpec, OnlyGpiodAndMockPathAreBackends) {
     EXPECT_TRUE(check_gpio_spec("").ok());
     EXPECT_TRUE(check_gpio_spec("gpiod").ok());
     EXPECT_TRUE(check_gpio_spec("mock:/tmp/knobs.txt").ok());
-    for (const char* bad : {"bogus", "mock:", "gpiod2", "Mock:/x"}) {
+    for (const char* bad : {"bogus", "gpiod2", "Mock:/x"}) {
         auto r = check_gpio_spec(bad);
         ASSERT_FALSE(r.ok()) << bad;
         EXPECT_EQ(r.error().code, ExitCode::Config);
