@@ -173,10 +173,14 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
 void save_state(LiveTuning& t) {
     if (!t.state_dirty || !t.state) return;
     t.state_dirty = false;
-    if (auto r = t.state->save(t.layers.state_text()); !r)
-        spdlog::warn("{}", r.error().message);
-    else
+    if (auto r = t.state->save(t.layers.state_text()); !r) {
+        // A refusal or a full disk fails every save alike: one line, not one per knob turn.
+        if (r.error().message != t.last_save_problem) spdlog::warn("{}", r.error().message);
+        t.last_save_problem = r.error().message;
+    } else {
+        t.last_save_problem.clear();
         spdlog::info("state: knob values saved to {}", t.state->path());
+    }
 }
 
 void add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning) {

@@ -34,6 +34,7 @@ struct LiveTuning {
     std::vector<io::KnobAction> actions;
     std::optional<params::StateStore> state;
     bool state_dirty = false;
+    std::string last_save_problem;  // logged once; the same failure is not logged again until a save works
     double last_knob_change = 0;
     bool layers_changed = false;
     const char* change_reason = "";  // for the log line

@@ -46,7 +46,8 @@ std::string config_path(const CliOptions& o) {
 
 // Restores the saved knob state. A bad key is dropped and warned about, one line each, and the valid
 // ones are kept; the original file is then set aside (never overwriting an earlier copy) and rewritten
-// with what was valid. `read_only` (--print-config) reads and warns but changes nothing on disk.
+// with what was valid, or, when it cannot be set aside, left as it is and never saved over. `read_only`
+// (--print-config) reads and warns but changes nothing on disk.
 void restore_saved_state(systems::LiveTuning& tuning, bool read_only) {
     auto loaded = tuning.state->load();
     for (const std::string& problem : loaded.problems) spdlog::warn("{}", problem);
@@ -57,7 +58,11 @@ void restore_saved_state(systems::LiveTuning& tuning, bool read_only) {
     }
     if (loaded.problems.empty() || read_only) return;
     auto copy = tuning.state->set_aside();
-    if (!copy) return spdlog::warn("{}; the file is left as it is", copy.error().message);
+    if (!copy) {  // the store now refuses to save: a file it could not keep is never replaced
+        spdlog::warn("{}", copy.error().message);
+        tuning.last_save_problem = copy.error().message;  // said once, not again at every knob save
+        return;
+    }
     spdlog::warn("state: the original is kept as {}; {} will hold the valid values", *copy,
                  tuning.state->path());
     tuning.state_dirty = true;  // saved on the first frame

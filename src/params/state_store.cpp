@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -66,39 +68,65 @@ bool write_all(int fd, std::string_view text) {
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
         if (n < 0 && errno == EINTR) continue;
+        if (n == 0) errno = EIO;  // no progress and no error: give up rather than spin
         if (n <= 0) return false;
         done += static_cast<std::size_t>(n);
     }
     return true;
 }
 
-// Copies `from` to `to`, which must not exist yet (O_EXCL): for file systems without hard links.
-bool copy_new_file(const std::string& from, const std::string& to, int& err) {
-    const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
-    if (in < 0) return err = errno, false;
-    const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (out < 0) {
-        err = errno;
+// Copies the regular file `from` to `to`, which must not exist yet (O_EXCL); 0 or errno. Anything else
+// (a FIFO: opened without blocking) is not copied.
+int copy_new_file(const char* from, const char* to) {
+    const int in = ::open(from, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (in < 0) return errno;
+    struct stat st {};
+    if (::fstat(in, &st) != 0 || !S_ISREG(st.st_mode)) {
         ::close(in);
-        return false;
+        return EINVAL;
+    }
+    const int out = ::open(to, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (out < 0) {
+        const int err = errno;
+        ::close(in);
+        return err;
     }
     char buffer[65536];
-    bool ok = true;
+    int err = 0;
     for (;;) {
         const ssize_t n = ::read(in, buffer, sizeof buffer);
         if (n < 0 && errno == EINTR) continue;
         if (n == 0) break;
         if (n < 0 || !write_all(out, std::string_view(buffer, static_cast<std::size_t>(n)))) {
-            ok = false;
+            err = errno;
             break;
         }
     }
-    ok = ok && ::fsync(out) == 0;
-    if (!ok) err = errno;
+    if (err == 0 && ::fsync(out) != 0) err = errno;
     ::close(in);
     ::close(out);
-    if (!ok) ::unlink(to.c_str());
-    return ok;
+    if (err != 0) ::unlink(to);
+    return err;
+}
+
+// Renames `from` to `to` unless `to` exists; 0 or errno (EEXIST when it does).
+int rename_new_name(const char* from, const char* to) {
+    if (::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_NOREPLACE) == 0) return 0;
+    if (errno != EINVAL) return errno;
+    // A file system without RENAME_NOREPLACE (some network ones): look, then rename.
+    if (::access(to, F_OK) == 0) return EEXIST;
+    return ::rename(from, to) == 0 ? 0 : errno;
+}
+
+// Keeps `from` (any kind of file but a folder) under the new name `to`: a hard link (free, and the
+// original stays in place), else a copy (file systems without hard links), else a rename, which a
+// writable folder allows even for a file this user may neither link nor read. 0, or the errno of the
+// last way tried; EEXIST as soon as `to` is taken.
+int keep_under_new_name(const char* from, const char* to) {
+    if (::link(from, to) == 0) return 0;
+    if (errno == EEXIST) return EEXIST;
+    if (const int err = copy_new_file(from, to); err == 0 || err == EEXIST) return err;
+    return rename_new_name(from, to);
 }
 
 void sync_folder(const fs::path& folder) {
@@ -108,9 +136,39 @@ void sync_folder(const fs::path& folder) {
     }
 }
 
-fs::path folder_of(const std::string& path) {
-    const fs::path p(path);
+fs::path folder_of(const fs::path& p) {
     return p.has_parent_path() ? p.parent_path() : fs::path(".");
+}
+
+// The file `path` leads to: itself, or the end of its chain of symbolic links, each relative target
+// taken from its own link's folder as the kernel does. The end need not exist (a dangling link names
+// the file a save creates).
+Result<fs::path> follow_links(const std::string& path) {
+    fs::path p = path;
+    for (int hop = 0; hop <= StateStore::max_links; ++hop) {
+        struct stat st {};
+        if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+        std::error_code ec;
+        const fs::path target = fs::read_symlink(p, ec);
+        if (ec)
+            return make_error(ExitCode::Runtime, "state: cannot read the link {}: {}", p.string(),
+                              ec.message());
+        p = p.parent_path() / target;  // an absolute target replaces the folder
+    }
+    return make_error(ExitCode::Runtime, "state: {}: more than {} symbolic links in a row; not saving", path,
+                      StateStore::max_links);
+}
+
+// Why `folder` cannot hold the state file, or null when it can.
+const char* unusable_folder(const fs::path& folder) {
+    struct stat st {};
+    if (::stat(folder.c_str(), &st) != 0) return std::strerror(errno);
+    return S_ISDIR(st.st_mode) ? nullptr : "not a folder";
+}
+
+// How a message names the state file: the path, and where it leads when that differs.
+std::string describe(const std::string& path, const fs::path& target) {
+    return target == fs::path(path) ? path : fmt::format("{} (-> {})", path, target.string());
 }
 
 }  // namespace
@@ -136,9 +194,21 @@ StateStore::Loaded StateStore::load() const {
     return out;
 }
 
-Result<std::string> StateStore::set_aside() const {
-    const fs::path folder = folder_of(path_);
-    const std::string base = fs::path(path_).filename().string();
+Result<std::string> StateStore::set_aside() {
+    auto aside = keep_aside();
+    if (!aside) refusal_ = aside.error().message;
+    return aside;
+}
+
+Result<std::string> StateStore::keep_aside() const {
+    auto target = follow_links(path_);
+    if (!target) return target.error();
+    struct stat st {};
+    if (::lstat(target->c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        return make_error(ExitCode::Runtime, "state: {} is a folder, not a file; knob changes are not saved",
+                          describe(path_, *target));
+    const fs::path folder = folder_of(*target);
+    const std::string base = target->filename().string();
     std::vector<std::pair<long, fs::path>> copies;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(folder, ec))
@@ -150,14 +220,14 @@ Result<std::string> StateStore::set_aside() const {
     std::string aside;
     for (int attempt = 0;; ++attempt, ++seq) {
         aside = (folder / fmt::format("{}{}{:04}-{}", base, aside_infix, seq, stamp)).string();
-        // A hard link keeps the original bytes under the new name at no cost: save() later renames a new
-        // file over the state's name, and the link still holds the old one. link() never overwrites.
-        if (::link(path_.c_str(), aside.c_str()) == 0) break;
-        int err = errno;
-        if (err != EEXIST && copy_new_file(path_, aside, err)) break;
+        // None of the ways overwrites an earlier copy: a taken name is EEXIST, and the next number is tried.
+        const int err = keep_under_new_name(target->c_str(), aside.c_str());
+        if (err == 0) break;
         if (err != EEXIST || attempt >= 100)
-            return make_error(ExitCode::Runtime, "state: cannot keep a copy of {} as {}: {}", path_, aside,
-                              std::strerror(err));
+            return make_error(ExitCode::Runtime,
+                              "state: cannot set {} aside as {}: {}; knob changes are not saved, so it stays "
+                              "as it is",
+                              describe(path_, *target), aside, std::strerror(err));
     }
     copies.emplace_back(seq, aside);
     for (std::size_t i = 0; i + kept_copies < copies.size(); ++i) fs::remove(copies[i].second, ec);
@@ -165,32 +235,51 @@ Result<std::string> StateStore::set_aside() const {
     return aside;
 }
 
-Result<std::string> StateStore::write_temporary(std::string_view text) const {
-    const fs::path target(path_);
-    std::error_code ec;
-    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    const std::string temp = path_ + ".tmp";
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0)
-        return make_error(ExitCode::Runtime, "state: cannot write {}: {}", temp, std::strerror(errno));
-    if (!write_all(fd, text)) {
-        const int err = errno;
-        ::close(fd);
-        return make_error(ExitCode::Runtime, "state: cannot write {}: {}", temp, std::strerror(err));
+Result<StateStore::Temporary> StateStore::write_beside_target(std::string_view text) const {
+    if (!refusal_.empty()) return make_error(ExitCode::Runtime, "{}", refusal_);
+    auto target = follow_links(path_);
+    if (!target) return target.error();
+    const fs::path folder = folder_of(*target);
+    if (*target == fs::path(path_)) {
+        std::error_code ec;
+        fs::create_directories(folder, ec);  // a first start; an error shows when the file is opened
+    } else if (const char* why = unusable_folder(folder)) {  // storage not mounted: write nothing beneath
+        return make_error(ExitCode::Runtime,
+                          "state: {} links to {}, whose folder {} cannot be used ({}); not saving", path_,
+                          target->string(), folder.string(), why);
     }
-    const bool synced = ::fsync(fd) == 0;
-    const int err = errno;
+    Temporary t{target->string() + ".tmp", target->string()};
+    // O_NOFOLLOW: a link named like the temporary file is not written through.
+    const int fd = ::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return make_error(ExitCode::Runtime, "state: cannot write {}: {}", t.temp, std::strerror(errno));
+    int err = write_all(fd, text) ? 0 : errno;
+    const char* failed = "write";
+    if (err == 0 && ::fsync(fd) != 0) err = errno, failed = "flush";
     ::close(fd);
-    if (!synced) return make_error(ExitCode::Runtime, "state: cannot flush {}: {}", temp, std::strerror(err));
-    return temp;
+    if (err != 0) {
+        ::unlink(t.temp.c_str());  // a failed save leaves nothing behind (a full disk: an empty file)
+        return make_error(ExitCode::Runtime, "state: cannot {} {}: {}", failed, t.temp, std::strerror(err));
+    }
+    return t;
+}
+
+Result<std::string> StateStore::write_temporary(std::string_view text) const {
+    auto t = write_beside_target(text);
+    if (!t) return t.error();
+    return t->temp;
 }
 
 Result<void> StateStore::save(std::string_view text) const {
-    auto temp = write_temporary(text);
-    if (!temp) return temp.error();
-    if (::rename(temp->c_str(), path_.c_str()) != 0)
-        return make_error(ExitCode::Runtime, "state: cannot replace {}: {}", path_, std::strerror(errno));
-    sync_folder(folder_of(path_));  // the rename is durable only once the folder is flushed too
+    auto t = write_beside_target(text);
+    if (!t) return t.error();
+    if (::rename(t->temp.c_str(), t->target.c_str()) != 0) {
+        const int err = errno;
+        ::unlink(t->temp.c_str());
+        return make_error(ExitCode::Runtime, "state: cannot replace {}: {}", describe(path_, t->target),
+                          std::strerror(err));
+    }
+    sync_folder(folder_of(t->target));  // the rename is durable only once the folder is flushed too
     return {};
 }
 

@@ -1,6 +1,10 @@
 // The live-tuning system: config reloads and knob turns reaching Params, the delayed state save.
 #include <gtest/gtest.h>
 
+#include <spdlog/sinks/ringbuffer_sink.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -164,6 +168,59 @@ TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
         rig.step(20.0 + 20.0 * i);
     }
     EXPECT_FLOAT_EQ(rig.params.f(ParamId::rain_intensity), 4.0f);
+}
+
+// The log lines at warning level and above while it lives.
+class Warnings {
+public:
+    Warnings() : sink_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(64)) {
+        sink_->set_level(spdlog::level::warn);
+        spdlog::default_logger()->sinks().push_back(sink_);
+    }
+    ~Warnings() {
+        auto& sinks = spdlog::default_logger()->sinks();
+        sinks.erase(std::remove(sinks.begin(), sinks.end(), sink_), sinks.end());
+    }
+    long count(const std::string& part) const {
+        const auto lines = sink_->last_formatted();
+        return std::count_if(lines.begin(), lines.end(),
+                             [&](const std::string& l) { return l.find(part) != std::string::npos; });
+    }
+
+private:
+    std::shared_ptr<spdlog::sinks::ringbuffer_sink_mt> sink_;
+};
+
+// A save that fails the same way at every knob turn (a folder in the state's place, a refusal, a full
+// disk) is one line, not one per save; after a save that works, a new failure is reported again.
+TEST(LiveTuning, ASaveThatKeepsFailingIsReportedOnce) {
+    Rig rig(knob_config);
+    const Warnings warnings;
+    const std::string failure =
+        "state: cannot replace " + (rig.dir / "state.toml").string() + ": Is a directory";
+    std::filesystem::create_directories(rig.dir / "state.toml");
+    rig.gpio->set_level("gpiochip0", 17, true, 0);
+    rig.gpio->set_level("gpiochip0", 18, true, 0);
+    rig.step(1.0);
+    for (int i = 0; i < 3; ++i) {
+        turn(*rig.gpio, 2.0 + 10.0 * i, 1);
+        rig.step(3.0 + 10.0 * i);
+        rig.step(3.0 + 10.0 * i + LiveTuning::save_delay_seconds);  // the save, which fails
+    }
+    EXPECT_EQ(warnings.count(failure), 1);
+
+    std::filesystem::remove(rig.dir / "state.toml");
+    turn(*rig.gpio, 40.0, 1);
+    rig.step(41.0);
+    rig.step(41.0 + LiveTuning::save_delay_seconds);
+    ASSERT_TRUE(std::filesystem::is_regular_file(rig.dir / "state.toml"));
+
+    std::filesystem::remove(rig.dir / "state.toml");
+    std::filesystem::create_directories(rig.dir / "state.toml");
+    turn(*rig.gpio, 50.0, 1);
+    rig.step(51.0);
+    rig.step(51.0 + LiveTuning::save_delay_seconds);
+    EXPECT_EQ(warnings.count(failure), 2);
 }
 
 TEST(LiveTuning, AConfigReloadDoesNotUndoAKnob) {
