@@ -7,6 +7,9 @@
 //   camera, sky decoding) would otherwise each get an arena whose freed memory glibc returns late, and
 //   resident memory then wandered by over 1 MiB in the soak test; with one arena it stays flat. Those
 //   threads allocate rarely, so sharing the arena costs nothing measurable.
+// - Fixed mmap and trim thresholds (M_MMAP_THRESHOLD 256 KiB, M_TRIM_THRESHOLD 512 KiB): glibc's dynamic
+//   thresholds rise after a large block (a decoded image) is freed, and freed memory is then kept; the
+//   frame loop allocates nothing, so large blocks going straight to mmap costs nothing there.
 namespace puddle::app {
 
 void setup_process();
