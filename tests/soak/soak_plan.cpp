@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <numeric>
 
@@ -22,8 +23,12 @@ constexpr std::array<Look, looks_per_cycle> looks{{
 
 long SoakPlan::warmup_frames() const {
     // Looks repeat every 12 reloads and field sizes every 8: every pairing of the two recurs every 24.
-    const long two_cycles = 2 * std::lcm(looks_per_cycle * 2, 8L) * reload_every;
-    return (two_cycles + check_every - 1) / check_every * check_every;
+    // The camera's unplug period crosses them: every look and field size has been drawn with the
+    // camera's cube and with the sky's after lcm(24 reloads, unplug_every) frames (21 600 by default).
+    const long pairings = std::lcm(looks_per_cycle * 2, 8L) * reload_every;
+    const long with_camera_states = unplugs ? std::lcm(pairings, unplug_every) : pairings;
+    const long needed = std::max(2 * pairings, with_camera_states);
+    return (needed + check_every - 1) / check_every * check_every;
 }
 
 Look SoakPlan::look_for_reload(long k) const {

@@ -24,11 +24,12 @@ struct SoakPlan {
     long check_every = 2000;   // GL errors, height field, resident memory and open fds
     // What runs (`puddle-soak --without ...` turns parts off, to find which one makes memory grow).
     bool reloads = true, look_switches = true, field_rebuilds = true, unplugs = true;
-    // Baseline for memory and fds: the first check after the pairings of look and field size have all
-    // run twice (2 x 24 reloads, 8640 frames; seven unplugs by then). Memory climbs until then, most
-    // likely as llvmpipe compiles a shader variant for each new combination of state it meets (a look
-    // with the camera's cube or the sky's, at one field size or the other): measured, a baseline at
-    // 5000 frames saw +760 KiB by frame 8000 and under 100 KiB more by 12000.
+    // Baseline for memory and fds: the first check after every look at every field size has run both
+    // with the camera streaming and unplugged (lcm of 24 reloads and the unplug period: 21 600 frames;
+    // at least the pairings of look and field size twice, 8640 frames, without unplugs). Memory climbs
+    // until then as llvmpipe compiles a shader variant for each new combination of state it meets:
+    // with a baseline at 9000 frames, a 10^6-frame run rose 600 to 700 KiB by frame 22 000 and then
+    // stayed there, and short runs sometimes failed at +1.4 MiB.
     long warmup_frames() const;
 
     // The look reload k asks for: six looks, each held for two reloads (the first only, without switches).
