@@ -110,9 +110,9 @@ Result<void> open_camera_feed(CameraFeed& feed, const params::Params& params) {
     return {};
 }
 
-void camera_feed_system(CameraFeed& feed, const params::Params& params, const FrameClock& clock,
+void camera_feed_system(CameraFeed& feed, const params::Params& params, const ecs::FrameTime& time,
                         gpu::Device& device, CameraEnvironment& env) {
-    feed.now += clock.frame_dt;
+    feed.now += time.dt_seconds;
     if (auto done = feed.worker.take()) collect(feed, std::move(*done));
     if (feed.worker.busy()) return;  // an open or close in flight: the cubemap meanwhile
     if (!wants_camera(params)) {

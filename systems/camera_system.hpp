@@ -78,7 +78,7 @@ camera::CaptureRequest camera_request(const params::Params& params);
 Result<void> open_camera_feed(CameraFeed& feed, const params::Params& params);
 
 // Once per frame; never waits for the worker.
-void camera_feed_system(CameraFeed& feed, const params::Params& params, const FrameClock& clock,
+void camera_feed_system(CameraFeed& feed, const params::Params& params, const ecs::FrameTime& time,
                         gpu::Device& device, CameraEnvironment& env);
 
 }  // namespace puddle::systems

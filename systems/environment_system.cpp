@@ -120,17 +120,13 @@ Result<void> load_ground(gpu::Device& device, const params::Params& params, Grou
     return upload_ground(device, std::move(prepared).value(), path, ground);
 }
 
-void environment_reload_system(ecs::World& world) {
-    const params::Params& params = world.resource<params::Params>();
-    auto& device = world.resource<gpu::Device>();
-    auto& env = world.resource<Environment>();
-    auto& reload = world.resource<EnvironmentReload>();
+void environment_reload_system(gpu::Device& device, const params::Params& params, Environment& env,
+                               Ground& ground, EnvironmentReload& reload) {
     if (params.s(ParamId::environment_image) != env.requested_image ||
         params.i(ParamId::environment_face_size) != env.requested_face_size)
         start_environment_reload(device, params, env, reload);
     continue_environment_reload(device, env, reload);
 
-    auto& ground = world.resource<Ground>();
     if (params.s(ParamId::ground_image) != ground.requested_image) {
         ground.requested_image = params.s(ParamId::ground_image);
         const int max_size = device.caps().max_texture_size;

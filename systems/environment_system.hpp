@@ -69,6 +69,7 @@ Result<void> load_ground(gpu::Device& device, const params::Params& params, Grou
 
 // Input stage: starts a reload when the parameters change, takes finished decodes, does one step of a
 // sky's GPU build and shows what is complete.
-void environment_reload_system(ecs::World& world);
+void environment_reload_system(gpu::Device& device, const params::Params& params, Environment& env,
+                               Ground& ground, EnvironmentReload& reload);
 
 }  // namespace puddle::systems

@@ -4,7 +4,7 @@
 
 namespace puddle::systems {
 
-void frame_clock_system(FrameClock& clock, const params::Params& params) {
+void frame_clock_system(const ecs::FrameTime& time, const params::Params& params, FrameClock& clock) {
     using params::ParamId;
     const double step = 1.0 / static_cast<double>(params.f(ParamId::wave_steps_per_second));
     if (step != clock.step_seconds) {
@@ -12,7 +12,7 @@ void frame_clock_system(FrameClock& clock, const params::Params& params) {
         clock.epoch_step = clock.step_index;
         clock.step_seconds = step;
     }
-    clock.accumulator += clock.frame_dt;
+    clock.accumulator += time.dt_seconds;
     // A step is due once the accumulator holds a whole step; the tolerance absorbs the rounding of
     // adding many small frame times, so 288 frames of 1/144 s are exactly 120 steps of 1/60 s.
     const double steps = std::floor(clock.accumulator / clock.step_seconds + 1e-6);

@@ -4,12 +4,12 @@
 
 #include <cstdint>
 
+#include "ecs/frame_time.hpp"
 #include "params/param_store.hpp"
 
 namespace puddle::systems {
 
 struct FrameClock {
-    double frame_dt = 0.0;       // set by the run loop before each frame: real time, or a fixed step headless
     double accumulator = 0.0;    // time not yet simulated
     double step_seconds = 1.0 / 60.0;
     double sim_time = 0.0;       // time of the step being simulated (advanced by begin_step)
@@ -23,8 +23,8 @@ struct FrameClock {
     std::uint64_t dropped_steps = 0;
 };
 
-// Input stage: turns frame_dt into steps_due at wave.steps_per_second.
-void frame_clock_system(FrameClock& clock, const params::Params& params);
+// Input stage: turns this frame's time into steps_due at wave.steps_per_second.
+void frame_clock_system(const ecs::FrameTime& time, const params::Params& params, FrameClock& clock);
 // First simulate-stage system: advances sim_time by one step.
 void begin_step_system(FrameClock& clock);
 

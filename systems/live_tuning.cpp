@@ -183,12 +183,15 @@ void save_state(LiveTuning& t) {
     }
 }
 
-void add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning) {
-    world.insert_resource<LiveTuning>(std::move(tuning));
-    start_live_tuning(world.resource<LiveTuning>());
-    schedule.add_system(ecs::Stage::Input, "live tuning", [](ecs::World& w) {
-        live_tuning_step(w.resource<LiveTuning>(), w.resource<params::Params>(), monotonic_seconds());
-    });
+void live_tuning_system(LiveTuning& tuning, params::Params& params) {
+    live_tuning_step(tuning, params, monotonic_seconds());
+}
+
+Result<void> add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning) {
+    start_live_tuning(world.insert_resource<LiveTuning>(std::move(tuning)));
+    schedule.add(ecs::Stage::Input, "live tuning", live_tuning_system);
+    schedule.add(ecs::Stage::Exit, "save state", save_state);
+    return {};
 }
 
 }  // namespace puddle::systems

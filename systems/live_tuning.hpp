@@ -17,6 +17,7 @@
 #include "params/config_watcher.hpp"
 #include "params/param_layers.hpp"
 #include "params/state_store.hpp"
+#include "util/result.hpp"
 
 namespace puddle::systems {
 
@@ -52,10 +53,13 @@ bool reload_config(LiveTuning& tuning);
 // One input-stage step at time `now`: config changes, knob events, the delayed state save, and the
 // recomposed `params` when a layer changed (logged as one line naming what changed).
 void live_tuning_step(LiveTuning& tuning, params::Params& params, double now);
-// Writes the knob state now when it has unsaved changes (at exit, or the "save" button).
+// Input stage: live_tuning_step at the monotonic time now.
+void live_tuning_system(LiveTuning& tuning, params::Params& params);
+// Writes the knob state now when it has unsaved changes (the exit stage, or the "save" button).
 void save_state(LiveTuning& tuning);
 
-// Inserts the resource and adds the live-tuning system to the input stage.
-void add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning);
+// Inserts the resource, starts it (start_live_tuning), adds live_tuning_system to the input stage and
+// save_state to the exit stage.
+Result<void> add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning);
 
 }  // namespace puddle::systems

@@ -46,6 +46,12 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
     return renderer.variants[renderer.shown].ensure(device, [&] { return puddle_desc(v, surface.unorm); });
 }
 
+void puddle_system(gpu::Device& device, const params::Params& params, const Surface& surface,
+                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
+                   const RenderTarget& target, const CameraEnvironment& camera) {
+    render_system(device, params, surface, env, ground, renderer, target, camera.reflection());
+}
+
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
                    const Environment& env, const Ground& ground, PuddleRenderer& renderer,
                    const RenderTarget& target, const gpu::Texture* environment_override,

@@ -6,6 +6,7 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "systems/camera_environment.hpp"
 #include "systems/environment_system.hpp"
 #include "systems/lazy_pipeline.hpp"
 #include "systems/puddle_variant.hpp"
@@ -36,7 +37,12 @@ struct PuddleRenderer {
 Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
                                    const params::Params& params, PuddleRenderer& renderer);
 
-// `variant` forces one (tests compare variants); by default the parameters choose.
+// Render stage: the puddle, reflecting the camera's cube while it streams, else the sky.
+void puddle_system(gpu::Device& device, const params::Params& params, const Surface& surface,
+                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
+                   const RenderTarget& target, const CameraEnvironment& camera);
+
+// The pass itself. `variant` forces one (tests compare variants); by default the parameters choose.
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
                    const Environment& env, const Ground& ground, PuddleRenderer& renderer,
                    const RenderTarget& target, const gpu::Texture* environment_override = nullptr,

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "ecs/schedule.hpp"
 #include "params/param_store.hpp"
 
 namespace puddle::systems {
@@ -25,5 +26,12 @@ ShownLook selected_look(const params::Params& params);
 
 // "ocean", "puddle with analytic drops": for log lines.
 std::string describe(const ShownLook& look);
+
+// Run conditions on the look on screen (ShownLook), for the systems that draw or simulate one look.
+ecs::RunCondition look_is(Scene scene);          // "look is ocean"
+ecs::RunCondition drops_are(DropModel drops);    // the puddle with these drops: "drops are grid"
+// The puddle's surface comes from the simulated wave field only with the pulse drops; analytic and grid
+// drops write it themselves, and the other scenes need no simulation.
+ecs::RunCondition wave_field_in_use();
 
 }  // namespace puddle::systems

@@ -12,6 +12,7 @@
 #include "app/check.hpp"
 #include "app/engine.hpp"
 #include "app/process_setup.hpp"
+#include "app/service_plugin.hpp"
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
 #include "app/service_notify.hpp"
@@ -23,6 +24,7 @@
 #include "params/param_docs.hpp"
 #include "platform/console_mode.hpp"
 #include "systems/live_tuning.hpp"
+#include "systems/puddle_plugin.hpp"
 
 namespace puddle::app {
 
@@ -112,6 +114,15 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     return tuning;
 }
 
+std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals, ServiceNotify& service,
+                                            systems::LiveTuning& tuning) {
+    return {
+        [&](ecs::World& w, ecs::Schedule& s) { return add_service_plugin(w, s, std::move(signals), std::move(service)); },
+        [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
+        systems::add_puddle_plugin,
+    };
+}
+
 namespace {
 
 // One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
@@ -156,11 +167,16 @@ int run(int argc, const char* const* argv) {
     o.display.mode = params->s(ParamId::display_mode);
 
     spdlog::info("puddle {} starting", version());
-    auto engine = Engine::create(*params, o.display, {.background_compiles = true}, [&tuning](ecs::World& world, ecs::Schedule& schedule) {
-        systems::add_live_tuning(world, schedule, std::move(*tuning));
-    });
+    // Before any thread starts, so that every thread (Mesa's too) inherits SIGINT, SIGTERM and SIGHUP blocked
+    // and they arrive only through the signalfd.
+    auto signals = std::make_unique<StopSignals>();
+    ServiceNotify notify = ServiceNotify::from_environment();
+    auto engine = Engine::create(*params, o.display, {.background_compiles = true},
+                                 puddle_features(signals, notify, *tuning));
     if (!engine) return fail(engine.error());
     Engine& e = **engine;
+    StopSignals& stop = e.world().resource<StopSignals>();
+    const ServiceNotify& service = e.world().resource<ServiceNotify>();
     const bool headless = e.display().kind() == platform::BackendKind::Headless;
     const std::string preset = e.world().resource<systems::LiveTuning>().layers.preset_name();
     const auto& caps = e.device().caps();
@@ -171,11 +187,9 @@ int run(int argc, const char* const* argv) {
     std::string screenshot = o.screenshot;
     if (headless && screenshot.empty() && !o.frames) screenshot = headless_default_screenshot;
 
-    StopSignals stop;
     // On a kiosk screen the text console must not draw over the picture; restored on every exit path.
     const auto console = e.display().kind() == platform::BackendKind::Kms ? platform::ConsoleGraphicsMode::enter()
                                                                          : std::nullopt;
-    ServiceNotify service = ServiceNotify::from_environment();
     if (service.enabled())
         spdlog::info("systemd: READY after the first frame{}", service.watchdog_interval() > 0
                          ? fmt::format(", watchdog every {:g} s while frames are presented", service.ping_interval())
@@ -189,7 +203,6 @@ int run(int argc, const char* const* argv) {
             stats.tick();
             if (const auto s = stats.take_report()) log_stats(*s);
         }
-        if (stop.take_reload()) e.world().resource<systems::LiveTuning>().reload_requested = true;
         if (stop.requested() || !e.display().poll_events()) {
             spdlog::info("stopping ({})", stop.last_signal() ? strsignal(stop.last_signal()) : "display closed");
             break;
@@ -199,13 +212,15 @@ int run(int argc, const char* const* argv) {
         const double dt = headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
         last = now;
         if (!screenshot.empty() && frames != 0 && n == frames - 1) e.capture_next_frame();
-        if (auto r = e.frame(dt); !r) return fail(r.error());
-        service.frame_presented(systems::monotonic_seconds());  // only presented frames feed the watchdog
+        if (auto r = e.frame(dt); !r) {  // a lost GPU or screen; the watchdog was pinged only after presents
+            e.shutdown();                // knob changes are the user's data: saved on this path too
+            return fail(r.error());
+        }
         if (o.fps_cap > 0 && !headless)
             std::this_thread::sleep_until(now + std::chrono::duration_cast<clock::duration>(
                                                     std::chrono::duration<double>(1.0 / o.fps_cap)));
     }
-    service.stopping();
+    e.shutdown();  // STOPPING=1 to systemd, knob changes not yet saved
     if (o.stats_every > 0) {
         if (const auto s = stats.summary(); s.frames > 0) log_stats(s);
         const MemoryStatus m = read_memory_status();
@@ -213,7 +228,6 @@ int run(int argc, const char* const* argv) {
                      "{:.1f} MB of the binary and shared libraries)",
                      m.peak_kib / 1024.0, m.rss_kib / 1024.0, m.anon_kib / 1024.0, m.file_kib / 1024.0);
     }
-    systems::save_state(e.world().resource<systems::LiveTuning>());  // knob changes not yet saved
     if (!screenshot.empty()) {
         // Both branches are values: a `const Image&` bound to `cond ? read_frame() : captured()` was a copy.
         const assets::Image image = e.captured().empty() ? e.read_frame() : e.take_captured();

@@ -1,7 +1,13 @@
 #pragma once
 // The puddle program: options -> parameters -> engine -> frame loop. Returns the process exit code.
 
+#include <memory>
+#include <vector>
+
 #include "app/cli.hpp"
+#include "app/engine.hpp"
+#include "app/service_notify.hpp"
+#include "app/signals.hpp"
 #include "systems/live_tuning.hpp"
 #include "util/result.hpp"
 
@@ -15,5 +21,10 @@ int run(int argc, const char* const* argv);
 // is set aside (README "Saved state"). `read_only` (--print-config) reads and warns but changes nothing on
 // disk. The soak test builds its engine with this too, so it runs what the binary runs.
 Result<systems::LiveTuning> load_tuning(const CliOptions& options, bool read_only = false);
+
+// The features the puddle binary installs, in this order: the service (signals, systemd), live tuning,
+// the puddle. The plugins take their arguments over (moved from) when Engine::create runs them.
+std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals, ServiceNotify& service,
+                                            systems::LiveTuning& tuning);
 
 }  // namespace puddle::app

@@ -38,6 +38,7 @@
 
 #include "app/bench_baseline.hpp"
 #include "app/engine.hpp"
+#include "systems/puddle_plugin.hpp"
 #include "camera/mjpeg_decoder.hpp"
 #include "camera/mjpeg_encoder.hpp"
 #include "systems/camera_environment.hpp"
@@ -80,7 +81,7 @@ Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
     platform::DisplayOptions display;
     display.backend = platform::BackendKind::Headless;
     display.size = size;
-    auto engine = app::Engine::create(Params{}, display);
+    auto engine = app::Engine::create(Params{}, display, {}, {systems::add_puddle_plugin});
     if (!engine) return engine.error();
     auto b = std::make_unique<Bench>();
     b->size = size;
@@ -150,20 +151,13 @@ void bench_floor(benchmark::State& state, glm::ivec2 size) {
     });
 }
 
-// The simulate stage's drop and wave systems, in the plugin's order (the schedule cannot run one stage
-// alone). The field has its own resolution, so the display size does not matter here.
+// The simulate stage (begin step, drops, wave), once. The field has its own resolution, so the display
+// size does not matter here.
 void bench_wave_step(benchmark::State& state, glm::ivec2 size) {
     Bench* b = bench_for(size, state);
     if (!b) return;
-    ecs::World& w = b->engine->world();
-    gpu::Device& device = b->engine->device();
-    const Params& params = w.resource<Params>();
-    auto& clock = w.resource<systems::FrameClock>();
-    measure(state, device, [&] {
-        systems::begin_step_system(clock);
-        systems::drop_system(params, clock, w, w.resource<systems::DropSlots>(), w.resource<systems::LiveDrops>());
-        systems::wave_system(device, params, w.resource<systems::LiveDrops>(), w.resource<systems::WaveField>());
-    });
+    app::Engine& engine = *b->engine;
+    measure(state, engine.device(), [&] { engine.run_stage(ecs::Stage::Simulate); });
 }
 
 void bench_surface(benchmark::State& state, glm::ivec2 size) {

@@ -1,11 +1,13 @@
 #pragma once
 // The Engine wires one display backend, the GPU device, the World and the Schedule together and runs
-// frames. The puddle binary, the benchmark and the GPU tests all drive the same Engine.
+// frames. The puddle binary, the benchmark and the GPU tests all drive the same Engine, each installing
+// the features it wants as plugins (the puddle's is systems::add_puddle_plugin).
 
 #include <functional>
 #include <memory>
 #include <vector>
 
+#include "app/frame_systems.hpp"
 #include "assets/image.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
@@ -18,40 +20,51 @@ namespace puddle::app {
 
 class Engine {
 public:
-    // Makes the display (exit code 4 on failure), the device, loads assets (3) and builds the systems.
-    // `input_plugin` adds systems that run first in the input stage (live tuning), before the puddle's.
-    using Plugin = std::function<void(ecs::World&, ecs::Schedule&)>;
+    // A feature: inserts its resources and registers its systems (Bevy's Plugin::build). Run once, in
+    // create(), in the order given; inside a stage, systems run in the order they were registered.
+    using Plugin = std::function<Result<void>(ecs::World&, ecs::Schedule&)>;
+
+    // Makes the display (exit code 4 on failure) and the device, installs the display plugin
+    // (app/frame_systems.hpp: the frame's start, the output canvas, capture and present), then each of
+    // `plugins` in order (their errors, such as an asset that does not load (3), are returned as they are).
+    // The schedule is logged at debug level, one line per system.
     static Result<std::unique_ptr<Engine>> create(const params::Params& params,
                                                   const platform::DisplayOptions& display_options,
-                                                  const gpu::DeviceOptions& device_options = {},
-                                                  const Plugin& input_plugin = {});
+                                                  const gpu::DeviceOptions& device_options,
+                                                  const std::vector<Plugin>& plugins);
     ~Engine();
 
-    // Runs one frame that advances simulated time by dt seconds: input, the due simulation steps,
-    // render, present. An error means the display failed (a lost GPU or screen).
+    // Runs one frame that advances time by dt seconds: one run of the schedule (input, the due
+    // simulation steps, render, present). An error means the display failed (a lost GPU or screen).
     Result<void> frame(double dt);
-    // The last rendered frame, top row first. Call before present() has shown it where that matters
-    // (window, kms): the engine does so when `capture_next_frame()` was called.
-    void capture_next_frame() { capture_ = true; }
-    const assets::Image& captured() const { return captured_; }
+    // One stage alone, outside a frame (the benchmark times the simulate stage).
+    void run_stage(ecs::Stage stage) { schedule_.run_stage(stage, world_); }
+    // Runs the exit stage (saves state, tells systemd it is stopping), once; later calls do nothing.
+    void shutdown();
+
+    // The next frame is read back before it is presented (a window or KMS may not keep it).
+    void capture_next_frame() { world_.resource<FrameCapture>().requested = true; }
+    const assets::Image& captured() { return world_.resource<FrameCapture>().image; }
     // Hands the captured frame over (8 MB at 1080p) rather than copying it.
-    assets::Image take_captured() { return std::move(captured_); }
+    assets::Image take_captured() { return std::move(world_.resource<FrameCapture>().image); }
     // Reads the frame target now (headless: always valid after a frame).
     assets::Image read_frame();
 
+    // Makes this engine's GL context current on the calling thread: call before using device() outside
+    // a frame when another engine may have made its own current (frames make theirs current themselves).
+    void make_current() { display().make_current(); }
+
     ecs::World& world() { return world_; }
-    params::Params& params();
-    gpu::Device& device();
-    platform::Display& display() { return *display_; }
+    const ecs::Schedule& schedule() const { return schedule_; }
+    params::Params& params() { return world_.resource<params::Params>(); }
+    gpu::Device& device() { return world_.resource<gpu::Device>(); }
+    platform::Display& display() { return world_.resource<platform::Display>(); }
 
 private:
     Engine() = default;
-    std::unique_ptr<platform::Display> display_;
-    ecs::World world_;
+    ecs::World world_;  // the display first: it outlives every GPU object (resources die newest first)
     ecs::Schedule schedule_;
-    Result<void> present_result_;
-    bool capture_ = false;
-    assets::Image captured_;
+    bool shut_down_ = false;
 };
 
 }  // namespace puddle::app

@@ -112,18 +112,30 @@ public:
         return static_cast<Storage<C>&>(*it->second);
     }
 
-    // Resources: one value per type, owned by the world (clock, params, GPU fields...).
+    // Resources: one value per type, owned by the world (clock, params, GPU fields...). They are
+    // destroyed in the reverse order of insertion, so a resource outlives every resource inserted after
+    // it (the display's EGL context outlives the GPU objects made with it). Replacing a resource keeps
+    // its place in that order.
     template <class R, class... Args>
     R& insert_resource(Args&&... args) {
         auto holder = std::make_unique<ResourceHolder<R>>(std::forward<Args>(args)...);
         R& ref = holder->value;
-        resources_[typeid(R)] = std::move(holder);
+        place(typeid(R), std::move(holder));
+        return ref;
+    }
+    // Takes an object made elsewhere (an implementation of an interface, such as the display backend).
+    template <class R>
+    R& adopt_resource(std::unique_ptr<R> value) {
+        assert(value);
+        auto holder = std::make_unique<AdoptedResource<R>>(std::move(value));
+        R& ref = *holder->value;
+        place(typeid(R), std::move(holder));
         return ref;
     }
     template <class R>
     R* try_resource() {
-        auto it = resources_.find(typeid(R));
-        return it == resources_.end() ? nullptr : &static_cast<ResourceHolder<R>&>(*it->second).value;
+        auto it = index_.find(typeid(R));
+        return it == index_.end() ? nullptr : static_cast<R*>(it->second->get());
     }
     template <class R>
     R& resource() {
@@ -133,26 +145,38 @@ public:
     }
     template <class R>
     void remove_resource() {
-        resources_.erase(typeid(R));
+        erase(typeid(R));
     }
+    ~World();
 
 private:
     struct ResourceBase {
         virtual ~ResourceBase() = default;
+        virtual void* get() = 0;
     };
     template <class R>
     struct ResourceHolder final : ResourceBase {
         template <class... Args>
         explicit ResourceHolder(Args&&... args) : value(std::forward<Args>(args)...) {}
+        void* get() override { return &value; }
         R value;
     };
+    template <class R>
+    struct AdoptedResource final : ResourceBase {
+        explicit AdoptedResource(std::unique_ptr<R> v) : value(std::move(v)) {}
+        void* get() override { return value.get(); }
+        std::unique_ptr<R> value;
+    };
+    void place(std::type_index type, std::unique_ptr<ResourceBase> holder);
+    void erase(std::type_index type);
 
     std::vector<std::uint32_t> generations_;
     std::vector<std::uint32_t> free_list_;
     std::vector<bool> alive_;
     std::size_t alive_count_ = 0;
     std::unordered_map<std::type_index, std::unique_ptr<StorageBase>> storages_;
-    std::unordered_map<std::type_index, std::unique_ptr<ResourceBase>> resources_;
+    std::vector<std::unique_ptr<ResourceBase>> resources_;  // in insertion order
+    std::unordered_map<std::type_index, ResourceBase*> index_;
 };
 
 }  // namespace puddle::ecs

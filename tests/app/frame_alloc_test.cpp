@@ -18,6 +18,7 @@
 #include "app/frame_stats.hpp"
 #include "support/gpu_fixture.hpp"
 #include "systems/live_tuning.hpp"
+#include "systems/puddle_plugin.hpp"
 
 namespace {
 
@@ -133,9 +134,12 @@ TEST(FrameAllocation, SteadyStateFramesWithLiveTuningAllocateNothing) {
     platform::DisplayOptions display;
     display.backend = platform::BackendKind::Headless;
     display.size = {160, 90};
-    auto engine = app::Engine::create(params::Params{}, display, {}, [](ecs::World& world, ecs::Schedule& schedule) {
-        systems::add_live_tuning(world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
-    });
+    auto engine = app::Engine::create(params::Params{}, display, {},
+                                      {[](ecs::World& world, ecs::Schedule& schedule) {
+                                           return systems::add_live_tuning(
+                                               world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
+                                       },
+                                       systems::add_puddle_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
     app::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);

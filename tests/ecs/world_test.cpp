@@ -2,6 +2,7 @@
 #include "ecs/world.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -277,6 +278,75 @@ TEST(World, Resources) {
     EXPECT_EQ(world.resource<Label>().text, "frame7");
     world.remove_resource<Counter>();  // removing a missing resource is a no-op
     EXPECT_EQ(world.try_resource<Counter>(), nullptr);
+}
+
+// Records its destruction in a shared log: the order resources die in.
+struct Noted {
+    Noted(std::vector<std::string>* destroyed_log, std::string noted_name)
+        : log(destroyed_log), name(std::move(noted_name)) {}
+    Noted(const Noted&) = delete;
+    ~Noted() { log->push_back(name); }
+    std::vector<std::string>* log;
+    std::string name;
+};
+struct Screen : Noted {
+    using Noted::Noted;
+};
+struct Gpu : Noted {
+    using Noted::Noted;
+};
+struct Field : Noted {
+    using Noted::Noted;
+};
+
+TEST(World, ResourcesDieInReverseOrderOfInsertion) {
+    // The display's EGL context must outlive every GPU object made with it, whatever the hash order.
+    std::vector<std::string> log;
+    {
+        World world;
+        world.insert_resource<Screen>(&log, "screen");
+        world.insert_resource<Gpu>(&log, "gpu");
+        world.insert_resource<Field>(&log, "field");
+    }
+    EXPECT_EQ(log, (std::vector<std::string>{"field", "gpu", "screen"}));
+}
+
+TEST(World, AReplacedResourceKeepsItsPlaceInTheOrder) {
+    std::vector<std::string> log;
+    {
+        World world;
+        world.insert_resource<Screen>(&log, "screen");
+        world.insert_resource<Gpu>(&log, "gpu 1");
+        world.insert_resource<Field>(&log, "field");
+        world.insert_resource<Gpu>(&log, "gpu 2");  // "gpu 1" dies now
+        EXPECT_EQ(log, (std::vector<std::string>{"gpu 1"}));
+        EXPECT_EQ(world.resource<Gpu>().name, "gpu 2");
+        world.remove_resource<Field>();
+    }
+    EXPECT_EQ(log, (std::vector<std::string>{"gpu 1", "field", "gpu 2", "screen"}));
+}
+
+struct Backend {
+    virtual ~Backend() = default;
+    virtual int kind() const = 0;
+};
+struct HeadlessBackend final : Backend {
+    explicit HeadlessBackend(int* destroyed_count) : destroyed(destroyed_count) {}
+    ~HeadlessBackend() override { ++*destroyed; }
+    int kind() const override { return 7; }
+    int* destroyed;
+};
+
+TEST(World, AnAdoptedImplementationIsFoundByItsInterface) {
+    int destroyed = 0;
+    {
+        World world;
+        Backend& b = world.adopt_resource<Backend>(std::make_unique<HeadlessBackend>(&destroyed));
+        EXPECT_EQ(&world.resource<Backend>(), &b);
+        EXPECT_EQ(world.resource<Backend>().kind(), 7);
+        EXPECT_EQ(destroyed, 0);
+    }
+    EXPECT_EQ(destroyed, 1);
 }
 
 }  // namespace

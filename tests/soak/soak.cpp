@@ -26,6 +26,7 @@
 
 #include "app/app.hpp"
 #include "app/engine.hpp"
+#include "systems/puddle_plugin.hpp"
 #include "app/logging.hpp"
 #include "app/process_setup.hpp"
 #include "assets/image_io.hpp"
@@ -358,7 +359,8 @@ int run(int argc, char** argv) {
     const params::Params initial = tuning->layers.compose();
     auto engine = app::Engine::create(
         initial, cli_options.display, {.background_compiles = true},
-        [&tuning](ecs::World& w, ecs::Schedule& s) { systems::add_live_tuning(w, s, std::move(*tuning)); });
+        {[&tuning](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(*tuning)); },
+         systems::add_puddle_plugin});
     if (!engine) {
         std::fprintf(stderr, "soak: %s\n", engine.error().message.c_str());
         return 2;

@@ -19,7 +19,7 @@ std::unique_ptr<app::Engine> make_engine(const params::Params& params, glm::ivec
     platform::DisplayOptions display;
     display.backend = platform::BackendKind::Headless;
     display.size = size;
-    auto engine = app::Engine::create(params, display, device);
+    auto engine = app::Engine::create(params, display, device, {systems::add_puddle_plugin});
     EXPECT_TRUE(engine.ok()) << (engine.ok() ? "" : engine.error().message);
     if (!engine) return nullptr;
     return std::move(engine).value();

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "app/engine.hpp"
+#include "systems/puddle_plugin.hpp"
 #include "params/param_store.hpp"
 
 namespace puddle::test {

@@ -11,8 +11,7 @@ using params::ParamSource;
 
 // Runs one frame of `dt` seconds through the input-stage system; returns the steps due.
 int frame(FrameClock& clock, const params::Params& p, double dt) {
-    clock.frame_dt = dt;
-    frame_clock_system(clock, p);
+    frame_clock_system(ecs::FrameTime{dt}, p, clock);
     return clock.steps_due;
 }
 

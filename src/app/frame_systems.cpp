@@ -1,0 +1,43 @@
+#include "app/frame_systems.hpp"
+
+#include "ecs/frame_time.hpp"
+
+namespace puddle::app {
+
+void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
+                        systems::OutputCanvas& canvas, systems::RenderTarget& target) {
+    display.make_current();  // another engine, or a test, may have made its own current since
+    target.target = systems::begin_canvas_frame(device, params, canvas, display.frame_target());
+}
+
+assets::Image read_display(platform::Display& display, gpu::Device& device) {
+    display.make_current();
+    const gpu::FrameTarget target = display.frame_target();
+    assets::Image image = assets::Image::make(target.size.x, target.size.y);
+    device.read_pixels(target, image.data);
+    return image;
+}
+
+void capture_system(platform::Display& display, gpu::Device& device, FrameCapture& capture) {
+    if (!capture.requested) return;
+    capture.requested = false;
+    capture.image = read_display(display, device);  // before present: a window or KMS may not keep the frame
+}
+
+void present_system(platform::Display& display, PresentStatus& status) { status.result = display.present(); }
+
+Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule) {
+    world.insert_resource<ecs::FrameTime>();
+    world.insert_resource<systems::RenderTarget>();
+    world.insert_resource<systems::OutputCanvas>();
+    world.insert_resource<FrameCapture>();
+    world.insert_resource<PresentStatus>();
+    using ecs::Stage;
+    schedule.add(Stage::Input, "begin frame", begin_frame_system);
+    schedule.add(Stage::Present, "output canvas", systems::output_canvas_system);
+    schedule.add(Stage::Present, "capture", capture_system);
+    schedule.add(Stage::Present, "present", present_system);
+    return {};
+}
+
+}  // namespace puddle::app

@@ -1,0 +1,46 @@
+#pragma once
+// The frame's start and end, as systems over the display (a World resource, platform::Display):
+//   input:   begin frame   makes the display's context current and picks where the scene renders
+//                          (the display, or the output canvas when it is turned or scaled)
+//   present: output canvas turns and scales the canvas onto the display
+//            capture       reads the frame back when asked (screenshots, tests)
+//            present       shows it (swap, page flip, or the headless fence)
+// add_display_plugin registers them; the engine installs it before any feature, so the frame is one run
+// of the schedule from the clock to the present.
+
+#include "assets/image.hpp"
+#include "ecs/schedule.hpp"
+#include "ecs/world.hpp"
+#include "gpu/device.hpp"
+#include "params/param_store.hpp"
+#include "platform/display.hpp"
+#include "systems/output_canvas.hpp"
+#include "systems/render_system.hpp"
+#include "util/result.hpp"
+
+namespace puddle::app {
+
+// Resource: a capture asked for (Engine::capture_next_frame) and the last image captured, top row first.
+struct FrameCapture {
+    bool requested = false;
+    assets::Image image;
+};
+
+// Resource: what the last present returned; an error means a lost GPU or screen.
+struct PresentStatus {
+    Result<void> result;
+};
+
+void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
+                        systems::OutputCanvas& canvas, systems::RenderTarget& target);
+void capture_system(platform::Display& display, gpu::Device& device, FrameCapture& capture);
+void present_system(platform::Display& display, PresentStatus& status);
+
+// The display's frame target read back now, top row first (RGBA8, the display's size).
+assets::Image read_display(platform::Display& display, gpu::Device& device);
+
+// Needs platform::Display, gpu::Device and params::Params in the world; inserts RenderTarget,
+// OutputCanvas, ecs::FrameTime, FrameCapture and PresentStatus and registers the systems above.
+Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule);
+
+}  // namespace puddle::app

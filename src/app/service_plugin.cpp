@@ -1,0 +1,26 @@
+#include "app/service_plugin.hpp"
+
+namespace puddle::app {
+
+void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning) {
+    if (signals.take_reload()) tuning.reload_requested = true;
+}
+
+void watchdog_ping_system(ServiceNotify& service, const PresentStatus& presented) {
+    if (presented.result) service.frame_presented(systems::monotonic_seconds());
+}
+
+void service_stopping_system(ServiceNotify& service) { service.stopping(); }
+
+Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule, std::unique_ptr<StopSignals> signals,
+                                ServiceNotify service) {
+    world.adopt_resource<StopSignals>(std::move(signals));
+    world.insert_resource<ServiceNotify>(std::move(service));
+    using ecs::Stage;
+    schedule.add(Stage::Input, "reload signal", reload_signal_system);
+    schedule.add(Stage::Present, "watchdog ping", watchdog_ping_system);
+    schedule.add(Stage::Exit, "service stopping", service_stopping_system);
+    return {};
+}
+
+}  // namespace puddle::app

@@ -1,0 +1,144 @@
+// Tests for src/app/engine.hpp: the frame is one run of the schedule, whose order is pinned here; the
+// engine knows no feature by name; the exit stage runs once.
+#include "app/engine.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "app/app.hpp"
+#include "support/test_support.hpp"
+#include "systems/puddle_plugin.hpp"
+
+namespace puddle::app {
+namespace {
+
+platform::DisplayOptions headless(glm::ivec2 size = {64, 36}) {
+    platform::DisplayOptions display;
+    display.backend = platform::BackendKind::Headless;
+    display.size = size;
+    return display;
+}
+
+// The schedule of the puddle binary, system by system: the frame from the clock to the present. A change
+// of order, of a run condition or of what a system reads and writes shows here first; update it on purpose.
+const std::vector<std::string> binary_schedule = {
+    "input/begin frame (reads Params; writes Display, Device, OutputCanvas, RenderTarget)",
+    "input/reload signal (writes StopSignals, LiveTuning)",
+    "input/live tuning (writes LiveTuning, Params)",
+    "input/frame clock (reads FrameTime, Params; writes FrameClock)",
+    "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
+    "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
+    "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, AnalyticRipples, "
+    "GridDrops, ShownLook)",
+    "input/camera feed (reads Params, FrameTime; writes CameraFeed, Device, CameraEnvironment)",
+    "simulate/begin step (writes FrameClock)",
+    "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, LiveDrops)",
+    "simulate/wave if the wave field is in use (reads Params, LiveDrops; writes Device, WaveField)",
+    "render/surface if the wave field is in use (reads WaveField; writes Device, Surface)",
+    "render/camera environment (reads Params, Environment; writes Device, CameraEnvironment)",
+    "render/analytic ripples if drops are analytic (reads Params, FrameClock; writes Device, AnalyticRipples, "
+    "Surface)",
+    "render/grid drops if drops are grid (reads Params, FrameClock; writes Device, GridDrops, Surface)",
+    "render/puddle if look is puddle (reads Params, Surface, Environment, Ground, RenderTarget, CameraEnvironment; "
+    "writes Device, PuddleRenderer)",
+    "render/ocean if look is ocean (reads Params, FrameClock, RenderTarget; writes Device, OceanRenderer)",
+    "render/street if look is street (reads Params, FrameClock, RenderTarget; writes Device, StreetRenderer)",
+    "render/rain overlay (reads Params, FrameClock, RenderTarget; writes Device, RainOverlay)",
+    "present/output canvas (reads OutputCanvas; writes Device)",
+    "present/capture (writes Display, Device, FrameCapture)",
+    "present/present (writes Display, PresentStatus)",
+    "present/watchdog ping (reads PresentStatus; writes ServiceNotify)",
+    "exit/service stopping (writes ServiceNotify)",
+    "exit/save state (writes LiveTuning)",
+};
+
+TEST(Engine, TheBinarysFrameIsThisScheduleInThisOrder) {
+    auto signals = std::make_unique<StopSignals>();
+    ServiceNotify service;
+    systems::LiveTuning tuning(params::ParamLayers({}, {}));
+    auto engine = Engine::create(params::Params{}, headless(), {}, puddle_features(signals, service, tuning));
+    ASSERT_TRUE(engine.ok()) << engine.error().message;
+    const std::vector<std::string> lines = (*engine)->schedule().describe();
+    EXPECT_EQ(lines, binary_schedule);
+    if (lines != binary_schedule)
+        for (const std::string& line : lines) ADD_FAILURE() << line;
+}
+
+struct Counts {
+    int frames = 0;
+    int exits = 0;
+};
+void count_frame(Counts& c) { ++c.frames; }
+void count_exit(Counts& c) { ++c.exits; }
+
+TEST(Engine, WithoutFeaturesItRunsOnlyTheDisplaysSystemsAndPresents) {
+    Counts* counts = nullptr;
+    auto engine = Engine::create(params::Params{}, headless(), {},
+                                 {[&](ecs::World& w, ecs::Schedule& s) -> Result<void> {
+                                     counts = &w.insert_resource<Counts>();
+                                     s.add(ecs::Stage::Render, "count", count_frame);
+                                     s.add(ecs::Stage::Exit, "count exit", count_exit);
+                                     return {};
+                                 }});
+    ASSERT_TRUE(engine.ok()) << engine.error().message;
+    Engine& e = **engine;
+    EXPECT_EQ(e.schedule().describe(),
+              (std::vector<std::string>{
+                  "input/begin frame (reads Params; writes Display, Device, OutputCanvas, RenderTarget)",
+                  "render/count (writes Counts)",
+                  "present/output canvas (reads OutputCanvas; writes Device)",
+                  "present/capture (writes Display, Device, FrameCapture)",
+                  "present/present (writes Display, PresentStatus)",
+                  "exit/count exit (writes Counts)",
+              }));
+    ASSERT_TRUE(e.frame(1.0 / 60).ok());
+    ASSERT_TRUE(e.frame(1.0 / 60).ok());
+    EXPECT_EQ(counts->frames, 2);
+    EXPECT_DOUBLE_EQ(e.world().resource<ecs::FrameTime>().dt_seconds, 1.0 / 60);
+    EXPECT_EQ(counts->exits, 0);
+    e.shutdown();
+    e.shutdown();
+    EXPECT_EQ(counts->exits, 1) << "the exit stage runs once";
+}
+
+TEST(Engine, APluginErrorStopsCreationWithItsMessage) {
+    auto engine = Engine::create(params::Params{}, headless(), {},
+                                 {[](ecs::World&, ecs::Schedule&) -> Result<void> {
+                                     return Error{"sky: cannot open /x.hdr", ExitCode::Asset};
+                                 }});
+    ASSERT_FALSE(engine.ok());
+    EXPECT_EQ(engine.error().code, ExitCode::Asset);
+    EXPECT_EQ(engine.error().message, "sky: cannot open /x.hdr");
+}
+
+TEST(Engine, ACapturedFrameIsTheFrameReadBack) {
+    auto engine = Engine::create(params::Params{}, headless({48, 32}), {}, {systems::add_puddle_plugin});
+    ASSERT_TRUE(engine.ok()) << engine.error().message;
+    Engine& e = **engine;
+    e.capture_next_frame();
+    ASSERT_TRUE(e.frame(1.0 / 60).ok());
+    const assets::Image captured = e.take_captured();
+    ASSERT_EQ(captured.width, 48);
+    ASSERT_EQ(captured.height, 32);
+    EXPECT_EQ(captured.data, e.read_frame().data) << "headless keeps the frame: the capture is the same pixels";
+    EXPECT_GT(test::luma_stddev(captured, 0, 0, 48, 32), 1.0) << "the puddle, not an empty target";
+}
+
+TEST(Engine, DebugLoggingPrintsTheScheduleOnceAtStartUp) {
+    const test::CommandResult r = test::run_puddle("-b headless --size 32x18 --frames 3 --log-level debug");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::size_t lines = 0;
+    for (std::size_t at = r.output.find("schedule: "); at != std::string::npos; at = r.output.find("schedule: ", at + 1))
+        ++lines;
+    EXPECT_EQ(lines, binary_schedule.size()) << r.output;
+    EXPECT_NE(r.output.find("schedule: " + binary_schedule.front()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("schedule: " + binary_schedule.back()), std::string::npos) << r.output;
+    // At info level, not at all.
+    const test::CommandResult quiet = test::run_puddle("-b headless --size 32x18 --frames 1");
+    EXPECT_EQ(quiet.output.find("schedule: "), std::string::npos) << quiet.output;
+}
+
+}  // namespace
+}  // namespace puddle::app
