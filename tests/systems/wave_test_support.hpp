@@ -18,6 +18,7 @@ struct Field {
 };
 
 inline Field read_field(app::Engine& e) {
+    e.make_current();  // tests keep two engines; the one that rendered last has its context current
     auto& field = e.world().resource<systems::WaveField>();
     return {field.resolution, field.read_heights(e.device())};
 }
@@ -26,6 +27,7 @@ inline Field read_field(app::Engine& e) {
 inline void step(app::Engine& e, std::initializer_list<glm::vec3> drops = {}) {
     systems::LiveDrops live;
     for (const glm::vec3& d : drops) live.drops[std::size_t(live.count++)] = glm::vec4(d, 0.0f);
+    e.make_current();
     systems::wave_system(e.device(), e.params(), live, e.world().resource<systems::WaveField>());
 }
 
