@@ -12,6 +12,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "util/unique_fd.hpp"
+
 namespace puddle::platform {
 
 std::vector<std::string> drm_card_paths(const std::string& folder) {
@@ -45,8 +47,9 @@ std::vector<DrmCardInfo> list_drm_cards() {
     std::vector<DrmCardInfo> cards;
     for (std::string& path : drm_card_paths()) cards.push_back({std::move(path)});
     for (DrmCardInfo& card : cards) {
-        const int fd = ::open(card.path.c_str(), O_RDWR | O_CLOEXEC);
-        if (fd < 0) {
+        const UniqueFd owned(::open(card.path.c_str(), O_RDWR | O_CLOEXEC));
+        const int fd = owned.get();
+        if (!owned) {
             card.error = fmt::format("cannot open: {}{}", std::strerror(errno),
                                      errno == EACCES ? " (add the user to group video)" : "");
             continue;
@@ -58,7 +61,6 @@ std::vector<DrmCardInfo> list_drm_cards() {
         drmModeRes* res = drmModeGetResources(fd);
         if (!res) {
             card.error = "no display outputs (a render-only GPU)";
-            ::close(fd);
             continue;
         }
         for (int i = 0; i < res->count_connectors; ++i) {
@@ -77,7 +79,6 @@ std::vector<DrmCardInfo> list_drm_cards() {
             drmModeFreeConnector(c);
         }
         drmModeFreeResources(res);
-        ::close(fd);
     }
     return cards;
 }

@@ -26,6 +26,7 @@
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
 #include "platform/egl_context.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::platform {
 
@@ -34,32 +35,6 @@ namespace {
 std::string errno_text(int err) {
     return std::error_code(err, std::generic_category()).message();
 }
-
-class UniqueFd {
-public:
-    UniqueFd() = default;
-    explicit UniqueFd(int fd) : fd_(fd) {}
-    UniqueFd(UniqueFd&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
-    UniqueFd& operator=(UniqueFd&& other) noexcept {
-        if (this != &other) {
-            reset();
-            fd_ = std::exchange(other.fd_, -1);
-        }
-        return *this;
-    }
-    UniqueFd(const UniqueFd&) = delete;
-    UniqueFd& operator=(const UniqueFd&) = delete;
-    ~UniqueFd() { reset(); }
-
-    int get() const { return fd_; }
-
-private:
-    void reset() {
-        if (fd_ >= 0) ::close(fd_);
-        fd_ = -1;
-    }
-    int fd_ = -1;
-};
 
 // unique_ptr deleter for a C API's free function.
 template <auto Free>
