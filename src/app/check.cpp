@@ -70,10 +70,15 @@ int run_check(const CliOptions& o, const std::string& config_path) {
     const auto cards = platform::list_drm_cards();
     if (cards.empty()) r.absent("no /dev/dri/card*: no KMS screen here (the window and headless backends still work)");
     for (const auto& card : cards) {
-        if (!card.error.empty()) {
-            (card.error.find("render-only") != std::string::npos ? r.absent(fmt::format("{}: {}", card.path, card.error))
-                                                                  : r.fix(fmt::format("{}: {}", card.path, card.error)));
-            continue;
+        switch (card.status) {
+            case platform::DrmCardStatus::NoOutputs:  // a render-only GPU beside the display one: no fault
+                r.absent(fmt::format("{}: {}", card.path, card.error));
+                continue;
+            case platform::DrmCardStatus::CannotOpen:
+                r.fix(fmt::format("{}: {}", card.path, card.error));
+                continue;
+            case platform::DrmCardStatus::Display:
+                break;
         }
         r.ok(fmt::format("{} ({}): {} connector(s)", card.path, card.driver, card.connectors.size()));
         for (const auto& c : card.connectors)

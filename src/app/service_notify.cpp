@@ -20,8 +20,8 @@ ServiceNotify ServiceNotify::from_environment() {
     if (!socket_path || !*socket_path || std::strlen(socket_path) >= sizeof(sockaddr_un::sun_path)) return n;
     n.address_ = socket_path;
     // Non-blocking: if systemd is slow to read, a ping is dropped rather than a frame stalled.
-    n.fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
-    if (n.fd_ < 0) {
+    n.fd_.reset(::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0));
+    if (!n.fd_) {
         spdlog::warn("systemd: cannot open the notify socket: {}", std::strerror(errno));
         return n;
     }
@@ -42,42 +42,19 @@ ServiceNotify ServiceNotify::from_environment() {
     return n;
 }
 
-ServiceNotify::ServiceNotify(ServiceNotify&& o) noexcept
-    : fd_(o.fd_), address_(std::move(o.address_)), watchdog_seconds_(o.watchdog_seconds_),
-      ready_sent_(o.ready_sent_), last_ping_(o.last_ping_) {
-    o.fd_ = -1;
-}
-
-ServiceNotify& ServiceNotify::operator=(ServiceNotify&& o) noexcept {
-    if (this != &o) {
-        if (fd_ >= 0) ::close(fd_);
-        fd_ = o.fd_;
-        address_ = std::move(o.address_);
-        watchdog_seconds_ = o.watchdog_seconds_;
-        ready_sent_ = o.ready_sent_;
-        last_ping_ = o.last_ping_;
-        o.fd_ = -1;
-    }
-    return *this;
-}
-
-ServiceNotify::~ServiceNotify() {
-    if (fd_ >= 0) ::close(fd_);
-}
-
 bool ServiceNotify::send(std::string_view message) {
-    if (fd_ < 0) return false;
+    if (!fd_) return false;
     sockaddr_un addr{};
     addr.sun_family = AF_UNIX;
     std::memcpy(addr.sun_path, address_.data(), address_.size());
     if (addr.sun_path[0] == '@') addr.sun_path[0] = '\0';  // abstract socket
     const auto len = static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + address_.size());
-    return ::sendto(fd_, message.data(), message.size(), MSG_NOSIGNAL, reinterpret_cast<const sockaddr*>(&addr),
-                    len) == static_cast<ssize_t>(message.size());
+    return ::sendto(fd_.get(), message.data(), message.size(), MSG_NOSIGNAL,
+                    reinterpret_cast<const sockaddr*>(&addr), len) == static_cast<ssize_t>(message.size());
 }
 
 void ServiceNotify::frame_presented(double now) {
-    if (fd_ < 0) return;
+    if (!fd_) return;
     if (!ready_sent_) {
         ready_sent_ = true;
         last_ping_ = now;
@@ -91,7 +68,7 @@ void ServiceNotify::frame_presented(double now) {
 }
 
 void ServiceNotify::status(std::string_view text) {
-    if (fd_ < 0) return;
+    if (!fd_) return;
     std::string m = "STATUS=";
     m += text;
     send(m);

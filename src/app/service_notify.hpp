@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "util/unique_fd.hpp"
+
 namespace puddle::app {
 
 class ServiceNotify {
@@ -16,13 +18,8 @@ public:
     // Reads NOTIFY_SOCKET and WATCHDOG_USEC (and WATCHDOG_PID, which must be ours or unset).
     static ServiceNotify from_environment();
     ServiceNotify() = default;
-    ServiceNotify(ServiceNotify&& other) noexcept;
-    ServiceNotify& operator=(ServiceNotify&& other) noexcept;
-    ServiceNotify(const ServiceNotify&) = delete;
-    ServiceNotify& operator=(const ServiceNotify&) = delete;
-    ~ServiceNotify();
 
-    bool enabled() const { return fd_ >= 0; }
+    bool enabled() const { return static_cast<bool>(fd_); }
     double watchdog_interval() const { return watchdog_seconds_; }  // 0: no watchdog
     double ping_interval() const { return watchdog_seconds_ / 4; }  // the least time between pings
 
@@ -35,7 +32,7 @@ public:
 
 private:
     bool send(std::string_view message);
-    int fd_ = -1;
+    UniqueFd fd_;          // the datagram socket; none without $NOTIFY_SOCKET
     std::string address_;  // the socket path; a leading '@' is the abstract namespace
     double watchdog_seconds_ = 0;
     bool ready_sent_ = false;

@@ -12,17 +12,17 @@ StopSignals::StopSignals() {
     sigaddset(&set, SIGTERM);
     sigaddset(&set, SIGHUP);
     pthread_sigmask(SIG_BLOCK, &set, &previous_);
-    fd_ = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
+    fd_.reset(signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC));
 }
 
 StopSignals::~StopSignals() {
-    if (fd_ >= 0) close(fd_);
+    fd_.reset();
     pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
 }
 
 bool StopSignals::requested() {
     signalfd_siginfo info{};
-    while (!last_ && fd_ >= 0 && read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+    while (!last_ && fd_ && read(fd_.get(), &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
         if (info.ssi_signo == SIGHUP) reload_ = true;
         else last_ = static_cast<int>(info.ssi_signo);
     }

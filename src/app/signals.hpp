@@ -5,6 +5,8 @@
 #include <csignal>
 #include <utility>
 
+#include "util/unique_fd.hpp"
+
 namespace puddle::app {
 
 class StopSignals {
@@ -20,7 +22,7 @@ public:
     int last_signal() const { return last_; }
 
 private:
-    int fd_ = -1;
+    UniqueFd fd_;  // the signalfd; none when it could not be made
     int last_ = 0;
     bool reload_ = false;
     sigset_t previous_{};

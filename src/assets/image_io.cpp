@@ -15,6 +15,7 @@
 
 #include "assets/image_limits.hpp"
 #include "assets/image_module.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::assets {
 namespace {
@@ -26,15 +27,15 @@ namespace fs = std::filesystem;
 // Only a regular file goes to the decoder: OpenImageIO opening a FIFO would wait for a writer (a
 // `mock:` camera folder holding one hung start-up), and a device would be read for ever.
 Result<void> check_readable(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
+    UniqueFd fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    if (!fd) {
         const int err = errno;
         return make_error(ExitCode::Asset, "image: {}: cannot open: {}", path,
                           std::generic_category().message(err));
     }
     struct stat st {};
-    const bool stated = ::fstat(fd, &st) == 0;
-    ::close(fd);
+    const bool stated = ::fstat(fd.get(), &st) == 0;
+    fd.reset();
     if (stated && S_ISDIR(st.st_mode))
         return make_error(ExitCode::Asset, "image: {}: cannot open: is a directory", path);
     if (stated && !S_ISREG(st.st_mode))

@@ -89,13 +89,11 @@ std::string describe_offer(const std::vector<OfferedFormat>& offered) {
 }
 
 Result<std::vector<OfferedFormat>> device_offer(V4l2Io& io, const std::string& path) {
-    const int fd = io.open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0)
+    const DeviceFd fd(io.open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC), {&io});
+    if (!fd)
         return make_error(ExitCode::Runtime, "{}: cannot open: {}{}", path, std::strerror(errno),
                           errno == EACCES ? " (add the user to group video)" : "");
-    auto offered = enumerate_formats(io, fd);
-    io.close(fd);
-    return offered;
+    return enumerate_formats(io, fd.get());
 }
 
 }  // namespace puddle::camera

@@ -52,7 +52,7 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
     const char* path = r.device.c_str();
     const int fd = io.open(path, O_RDWR | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) return make_error(ExitCode::Runtime, "camera: {}: open: {}", r.device, std::strerror(errno));
-    c.fd_ = DeviceFd(io, fd);
+    c.fd_ = DeviceFd(fd, {&io});
 
     v4l2_capability cap{};
     if (xioctl(io, fd, VIDIOC_QUERYCAP, &cap) != 0)
@@ -161,7 +161,7 @@ Result<V4l2Capture> V4l2Capture::open(V4l2Io& io, const CaptureRequest& r) {
             exp.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
             exp.index = i;
             exp.flags = O_RDONLY | O_CLOEXEC;
-            if (xioctl(io, fd, VIDIOC_EXPBUF, &exp) == 0) c.buffers_[i].dmabuf = DeviceFd(io, exp.fd);
+            if (xioctl(io, fd, VIDIOC_EXPBUF, &exp) == 0) c.buffers_[i].dmabuf = DeviceFd(exp.fd, {&io});
         }
     }
     // Zero-copy frames are read by the GPU after poll() returns: keep the previous one too, where

@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <utility>
 
+#include "util/unique_fd.hpp"
+
 namespace puddle::camera {
 
 class V4l2Io {
@@ -33,33 +35,8 @@ int xioctl(V4l2Io& io, int fd, unsigned long request, void* arg);
 // retried; poll(2) reports a vanished device as POLLERR or POLLHUP instead.
 bool device_vanished(int err);
 
-// A descriptor opened through the seam, closed through it when this dies.
-class DeviceFd {
-public:
-    DeviceFd() = default;
-    DeviceFd(V4l2Io& io, int fd) : io_(&io), fd_(fd) {}
-    DeviceFd(DeviceFd&& o) noexcept : io_(o.io_), fd_(std::exchange(o.fd_, -1)) {}
-    DeviceFd& operator=(DeviceFd&& o) noexcept {
-        if (this != &o) {
-            reset();
-            io_ = o.io_;
-            fd_ = std::exchange(o.fd_, -1);
-        }
-        return *this;
-    }
-    DeviceFd(const DeviceFd&) = delete;
-    DeviceFd& operator=(const DeviceFd&) = delete;
-    ~DeviceFd() { reset(); }
-    int get() const { return fd_; }
-    explicit operator bool() const { return fd_ >= 0; }
-    void reset() {
-        if (fd_ >= 0) io_->close(std::exchange(fd_, -1));
-    }
-
-private:
-    V4l2Io* io_ = nullptr;
-    int fd_ = -1;
-};
+// A descriptor opened through the seam, closed through it when this dies: DeviceFd(fd, {&io}).
+using DeviceFd = BasicUniqueFd<CloseThrough<V4l2Io>>;
 
 // One mmap'ed buffer, unmapped through the seam when this dies.
 class Mapping {

@@ -83,15 +83,15 @@ MockGpio::MockGpio(std::string script) : script_(std::move(script)) {
     add_chip("gpiochip0", "mock-gpio");
     if (!script_.empty()) {
         // O_NONBLOCK: opening a FIFO with no writer yet must not wait, and reads never block.
-        fd_ = ::open(script_.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-        if (fd_ < 0) spdlog::warn("gpio: mock script {} cannot be opened: {}; knobs will not move", script_, std::strerror(errno));
+        fd_.reset(::open(script_.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+        if (!fd_)
+            spdlog::warn("gpio: mock script {} cannot be opened: {}; knobs will not move", script_,
+                         std::strerror(errno));
         else spdlog::info("gpio: mock backend reading line changes from {}", script_);
     }
 }
 
-MockGpio::~MockGpio() {
-    if (fd_ >= 0) ::close(fd_);
-}
+MockGpio::~MockGpio() = default;
 
 std::vector<GpioChipInfo> MockGpio::chips() {
     std::vector<GpioChipInfo> out;
@@ -181,11 +181,11 @@ void MockGpio::note_bad_line(std::string_view line, std::string_view why) {
 }
 
 void MockGpio::poll(double now) {
-    if (fd_ < 0) return;
+    if (!fd_) return;
     char buffer[1024];
     // A huge script is read over several frames, never all at once into memory.
     while (pending_.size() < max_script_pending) {
-        const ssize_t n = ::read(fd_, buffer, sizeof buffer);
+        const ssize_t n = ::read(fd_.get(), buffer, sizeof buffer);
         if (n <= 0) break;
         std::string_view chunk(buffer, static_cast<std::size_t>(n));
         if (skipping_long_line_) {  // the rest of a line that was too long to be a command

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "io/gpio_backend.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::io {
 
@@ -50,7 +51,7 @@ private:
 
     std::map<std::string, std::shared_ptr<Chip>> chips_;
     std::string script_;
-    int fd_ = -1;
+    UniqueFd fd_;          // the script; none without one
     std::string pending_;  // script text read but not yet run
     bool skipping_long_line_ = false;
     int bad_lines_ = 0;

@@ -99,11 +99,11 @@ Walk walk(const fs::path& start) {
 }  // namespace
 
 Result<ConfigWatcher> ConfigWatcher::watch(const std::string& path) {
-    const int fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-    if (fd < 0)
+    UniqueFd fd(inotify_init1(IN_NONBLOCK | IN_CLOEXEC));
+    if (!fd)
         return make_error(ExitCode::Runtime, "config: cannot watch {}: inotify: {}", path,
                           std::strerror(errno));
-    ConfigWatcher w(fd, fs::absolute(path).string());
+    ConfigWatcher w(std::move(fd), fs::absolute(path).string());
     if (auto r = w.rewatch(); !r) return r.error();
     return w;
 }
@@ -122,14 +122,14 @@ Result<void> ConfigWatcher::rewatch() {
             s.wd = same->wd;
             continue;
         }
-        s.wd = inotify_add_watch(fd_, s.folder.c_str(), watch_mask);
+        s.wd = inotify_add_watch(fd_.get(), s.folder.c_str(), watch_mask);
         if (s.wd < 0) watch_error = errno;
     }
     for (const Step& old : steps_) {
         const bool kept =
             std::any_of(w.steps.begin(), w.steps.end(), [&](const Step& s) { return s.wd == old.wd; });
         if (old.wd >= 0 && !kept)
-            inotify_rm_watch(fd_, old.wd);  // a shared descriptor fails the second time: fine
+            inotify_rm_watch(fd_.get(), old.wd);  // a shared descriptor fails the second time: fine
     }
     steps_ = std::move(w.steps);
     present_ = w.present;
@@ -154,37 +154,13 @@ std::vector<Step> ConfigWatcher::chain() const {
     return out;
 }
 
-ConfigWatcher::ConfigWatcher(ConfigWatcher&& other) noexcept
-    : fd_(other.fd_),
-      path_(std::move(other.path_)),
-      steps_(std::move(other.steps_)),
-      present_(other.present_) {
-    other.fd_ = -1;
-}
-
-ConfigWatcher& ConfigWatcher::operator=(ConfigWatcher&& other) noexcept {
-    if (this != &other) {
-        if (fd_ >= 0) close(fd_);
-        fd_ = other.fd_;
-        path_ = std::move(other.path_);
-        steps_ = std::move(other.steps_);
-        present_ = other.present_;
-        other.fd_ = -1;
-    }
-    return *this;
-}
-
-ConfigWatcher::~ConfigWatcher() {
-    if (fd_ >= 0) close(fd_);
-}
-
 ConfigWatcher::Change ConfigWatcher::poll() {
     bool touched = false;   // an event named a step
     bool complete = false;  // something was closed after writing or renamed into a step's place
     bool replaced = false;  // something that is no regular file appeared at a step (link, folder, FIFO)
     alignas(inotify_event) char buffer[4096];
     for (;;) {
-        const ssize_t n = read(fd_, buffer, sizeof buffer);
+        const ssize_t n = read(fd_.get(), buffer, sizeof buffer);
         if (n <= 0) break;  // EAGAIN: nothing more now
         for (ssize_t at = 0; at < n;) {
             const auto* e = reinterpret_cast<const inotify_event*>(buffer + at);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "util/result.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::params {
 
@@ -27,12 +28,6 @@ public:
     // (the kernel's ELOOP limit); the path is named in the message. Folders above it that cannot be
     // watched (no read permission) are skipped: only their renames go unseen.
     static Result<ConfigWatcher> watch(const std::string& path);
-    ConfigWatcher(ConfigWatcher&& other) noexcept;
-    ConfigWatcher& operator=(ConfigWatcher&& other) noexcept;
-    ConfigWatcher(const ConfigWatcher&) = delete;
-    ConfigWatcher& operator=(const ConfigWatcher&) = delete;
-    ~ConfigWatcher();
-
     // What happened to the config since the last poll:
     // Written once a new version is complete (closed after writing, renamed into place, a link or a
     // folder along the way changed and the path leads to something again), or something that is not a
@@ -40,7 +35,7 @@ public:
     // Removed once when the path stops leading anywhere (the file, a folder or a link's target is gone),
     // and not again until something is back.
     Change poll();
-    int fd() const { return fd_; }
+    int fd() const { return fd_.get(); }
 
     // One name along the way, and the watch on the folder that holds it.
     struct Step {
@@ -56,9 +51,9 @@ public:
     const std::vector<Step>& steps() const { return steps_; }
 
 private:
-    ConfigWatcher(int fd, std::string path) : fd_(fd), path_(std::move(path)) {}
+    ConfigWatcher(UniqueFd fd, std::string path) : fd_(std::move(fd)), path_(std::move(path)) {}
     Result<void> rewatch();
-    int fd_ = -1;
+    UniqueFd fd_;       // the inotify instance
     std::string path_;  // as given, made absolute: where each walk starts
     std::vector<Step> steps_;
     bool present_ = false;  // the walk reached an existing final name

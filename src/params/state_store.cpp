@@ -14,6 +14,7 @@
 #include <filesystem>
 
 #include "params/toml_limits.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::params {
 
@@ -78,33 +79,26 @@ bool write_all(int fd, std::string_view text) {
 // Copies the regular file `from` to `to`, which must not exist yet (O_EXCL); 0 or errno. Anything else
 // (a FIFO: opened without blocking) is not copied.
 int copy_new_file(const char* from, const char* to) {
-    const int in = ::open(from, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (in < 0) return errno;
+    UniqueFd in(::open(from, O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    if (!in) return errno;
     struct stat st {};
-    if (::fstat(in, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(in);
-        return EINVAL;
-    }
-    const int out = ::open(to, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (out < 0) {
-        const int err = errno;
-        ::close(in);
-        return err;
-    }
+    if (::fstat(in.get(), &st) != 0 || !S_ISREG(st.st_mode)) return EINVAL;
+    UniqueFd out(::open(to, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644));
+    if (!out) return errno;
     char buffer[65536];
     int err = 0;
     for (;;) {
-        const ssize_t n = ::read(in, buffer, sizeof buffer);
+        const ssize_t n = ::read(in.get(), buffer, sizeof buffer);
         if (n < 0 && errno == EINTR) continue;
         if (n == 0) break;
-        if (n < 0 || !write_all(out, std::string_view(buffer, static_cast<std::size_t>(n)))) {
+        if (n < 0 || !write_all(out.get(), std::string_view(buffer, static_cast<std::size_t>(n)))) {
             err = errno;
             break;
         }
     }
-    if (err == 0 && ::fsync(out) != 0) err = errno;
-    ::close(in);
-    ::close(out);
+    if (err == 0 && ::fsync(out.get()) != 0) err = errno;
+    in.reset();
+    out.reset();
     if (err != 0) ::unlink(to);
     return err;
 }
@@ -130,10 +124,8 @@ int keep_under_new_name(const char* from, const char* to) {
 }
 
 void sync_folder(const fs::path& folder) {
-    if (const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
-        ::fsync(dir);
-        ::close(dir);
-    }
+    if (const UniqueFd dir(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)); dir)
+        ::fsync(dir.get());
 }
 
 fs::path folder_of(const fs::path& p) {
@@ -250,13 +242,12 @@ Result<StateStore::Temporary> StateStore::write_beside_target(std::string_view t
     }
     Temporary t{target->string() + ".tmp", target->string()};
     // O_NOFOLLOW: a link named like the temporary file is not written through.
-    const int fd = ::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
-    if (fd < 0)
-        return make_error(ExitCode::Runtime, "state: cannot write {}: {}", t.temp, std::strerror(errno));
-    int err = write_all(fd, text) ? 0 : errno;
+    UniqueFd fd(::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644));
+    if (!fd) return make_error(ExitCode::Runtime, "state: cannot write {}: {}", t.temp, std::strerror(errno));
+    int err = write_all(fd.get(), text) ? 0 : errno;
     const char* failed = "write";
-    if (err == 0 && ::fsync(fd) != 0) err = errno, failed = "flush";
-    ::close(fd);
+    if (err == 0 && ::fsync(fd.get()) != 0) err = errno, failed = "flush";
+    fd.reset();
     if (err != 0) {
         ::unlink(t.temp.c_str());  // a failed save leaves nothing behind (a full disk: an empty file)
         return make_error(ExitCode::Runtime, "state: cannot {} {}: {}", failed, t.temp, std::strerror(err));

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <optional>
 
+#include "util/unique_fd.hpp"
+
 namespace puddle::params {
 
 namespace {
@@ -245,14 +247,12 @@ std::string_view file_kind(mode_t mode) {
 Result<std::string> read_toml_file(const std::string& path) {
     // O_NONBLOCK: opening a FIFO for reading would wait for a writer, with the frame loop (and SIGTERM's
     // handling) stuck in open(); only a regular file is read at all.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0)
-        return make_error(ExitCode::Config, "config: {}: cannot open: {}", path, std::strerror(errno));
+    const UniqueFd fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    if (!fd) return make_error(ExitCode::Config, "config: {}: cannot open: {}", path, std::strerror(errno));
     struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (::fstat(fd.get(), &st) != 0 || !S_ISREG(st.st_mode)) {
         const int err = errno;
         const mode_t mode = st.st_mode;
-        ::close(fd);
         if (mode == 0)
             return make_error(ExitCode::Config, "config: {}: cannot read: {}", path, std::strerror(err));
         return make_error(ExitCode::Config, "config: {}: is {}, not a file", path, file_kind(mode));
@@ -260,17 +260,13 @@ Result<std::string> read_toml_file(const std::string& path) {
     std::string text(toml_limits.max_bytes + 1, '\0');
     std::size_t got = 0;
     while (got < text.size()) {
-        const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+        const ssize_t n = ::read(fd.get(), text.data() + got, text.size() - got);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) {
-            const int err = errno;
-            ::close(fd);
-            return make_error(ExitCode::Config, "config: {}: cannot read: {}", path, std::strerror(err));
-        }
+        if (n < 0)
+            return make_error(ExitCode::Config, "config: {}: cannot read: {}", path, std::strerror(errno));
         if (n == 0) break;
         got += static_cast<std::size_t>(n);
     }
-    ::close(fd);
     text.resize(got);
     if (text.size() > toml_limits.max_bytes)
         return make_error(ExitCode::Config, "config: {}: larger than 1 MiB; the limit is {} bytes", path,

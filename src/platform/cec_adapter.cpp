@@ -75,32 +75,15 @@ Result<CecAdapter> CecAdapter::open(CecIo& io, const std::string& path, std::str
     return adapter;
 }
 
-CecAdapter::CecAdapter(CecAdapter&& o) noexcept
-    : io_(o.io_), path_(std::move(o.path_)), fd_(std::exchange(o.fd_, -1)) {}
-
-CecAdapter& CecAdapter::operator=(CecAdapter&& o) noexcept {
-    if (this != &o) {
-        if (fd_ >= 0) io_->close(fd_);
-        io_ = o.io_;
-        path_ = std::move(o.path_);
-        fd_ = std::exchange(o.fd_, -1);
-    }
-    return *this;
-}
-
-CecAdapter::~CecAdapter() {
-    if (fd_ >= 0) io_->close(fd_);
-}
-
 std::uint16_t CecAdapter::physical_address() const {
     std::uint16_t address = CEC_PHYS_ADDR_INVALID;
-    if (xioctl(*io_, fd_, CEC_ADAP_G_PHYS_ADDR, &address) < 0) return CEC_PHYS_ADDR_INVALID;
+    if (xioctl(*io_, fd_.get(), CEC_ADAP_G_PHYS_ADDR, &address) < 0) return CEC_PHYS_ADDR_INVALID;
     return address;
 }
 
 std::uint8_t CecAdapter::logical_address() const {
     cec_log_addrs current{};
-    if (xioctl(*io_, fd_, CEC_ADAP_G_LOG_ADDRS, &current) < 0 || current.num_log_addrs == 0 ||
+    if (xioctl(*io_, fd_.get(), CEC_ADAP_G_LOG_ADDRS, &current) < 0 || current.num_log_addrs == 0 ||
         current.log_addr[0] == CEC_LOG_ADDR_INVALID)
         return CEC_LOG_ADDR_UNREGISTERED;
     return current.log_addr[0];
@@ -112,7 +95,7 @@ Result<CecDelivery> CecAdapter::send(std::uint8_t destination, const std::uint8_
     msg.msg[0] = static_cast<std::uint8_t>(logical_address() << 4 | destination);
     std::memcpy(msg.msg + 1, body, length);
     msg.len = static_cast<std::uint32_t>(length + 1);
-    if (xioctl(*io_, fd_, CEC_TRANSMIT, &msg) < 0) {
+    if (xioctl(*io_, fd_.get(), CEC_TRANSMIT, &msg) < 0) {
         if (errno == ENONET)
             return make_error(ExitCode::Display,
                               "cec: {}: {}: no logical address yet (is the HDMI cable in a TV?)", path_,

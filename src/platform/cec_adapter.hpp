@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "util/result.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::platform {
 
@@ -45,12 +46,6 @@ public:
     // refused; the message names the path and the ioctl.
     static Result<CecAdapter> open(CecIo& io, const std::string& path, std::string_view osd_name);
 
-    CecAdapter(CecAdapter&& o) noexcept;
-    CecAdapter& operator=(CecAdapter&& o) noexcept;
-    CecAdapter(const CecAdapter&) = delete;
-    CecAdapter& operator=(const CecAdapter&) = delete;
-    ~CecAdapter();
-
     // <Standby> to the TV (logical address 0).
     Result<CecDelivery> standby_tv();
     // <Image View On> to the TV, then <Active Source> with this adapter's physical address to all.
@@ -62,13 +57,13 @@ public:
     std::uint16_t physical_address() const;
 
 private:
-    CecAdapter(CecIo& io, std::string path, int fd) : io_(&io), path_(std::move(path)), fd_(fd) {}
+    CecAdapter(CecIo& io, std::string path, int fd) : io_(&io), path_(std::move(path)), fd_(fd, {&io}) {}
     Result<CecDelivery> send(std::uint8_t destination, const std::uint8_t* body, std::size_t length,
                              std::string_view what);
     std::uint8_t logical_address() const;
     CecIo* io_;
     std::string path_;
-    int fd_ = -1;
+    BasicUniqueFd<CloseThrough<CecIo>> fd_;  // closed through io_, so the fake adapter sees it
 };
 
 // "1.0.0.0", as TVs and cec-ctl show a physical address; "f.f.f.f" when there is none.

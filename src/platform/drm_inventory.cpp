@@ -12,6 +12,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "util/unique_fd.hpp"
+
 namespace puddle::platform {
 
 std::vector<std::string> drm_card_paths(const std::string& folder) {
@@ -41,43 +43,50 @@ std::string mode_name(const drmModeModeInfo& m) {
     return fmt::format("{}x{}@{}", m.hdisplay, m.vdisplay, m.vrefresh);
 }
 
-std::vector<DrmCardInfo> list_drm_cards() {
+DrmCardInfo read_drm_card(int fd, std::string path) {
+    DrmCardInfo card{std::move(path)};
+    if (drmVersionPtr v = drmGetVersion(fd)) {
+        card.driver = v->name ? v->name : "";
+        drmFreeVersion(v);
+    }
+    drmModeRes* res = drmModeGetResources(fd);
+    if (!res) {
+        card.status = DrmCardStatus::NoOutputs;
+        card.error = "no display outputs (a render-only GPU)";
+        return card;
+    }
+    for (int i = 0; i < res->count_connectors; ++i) {
+        drmModeConnector* c = drmModeGetConnector(fd, res->connectors[i]);
+        if (!c) continue;
+        DrmConnectorInfo info{connector_name(*c), c->connection == DRM_MODE_CONNECTED, {}};
+        for (int m = 0; m < c->count_modes; ++m) {
+            const drmModeModeInfo& mode = c->modes[m];
+            std::string text = mode_name(mode);
+            if (mode.type & DRM_MODE_TYPE_PREFERRED)
+                info.modes.insert(info.modes.begin(), text + " (preferred)");
+            else if (std::find(info.modes.begin(), info.modes.end(), text) == info.modes.end())
+                info.modes.push_back(text);
+        }
+        card.connectors.push_back(std::move(info));
+        drmModeFreeConnector(c);
+    }
+    drmModeFreeResources(res);
+    return card;
+}
+
+std::vector<DrmCardInfo> list_drm_cards(const std::string& folder) {
     std::vector<DrmCardInfo> cards;
-    for (std::string& path : drm_card_paths()) cards.push_back({std::move(path)});
-    for (DrmCardInfo& card : cards) {
-        const int fd = ::open(card.path.c_str(), O_RDWR | O_CLOEXEC);
-        if (fd < 0) {
-            card.error = fmt::format("cannot open: {}{}", std::strerror(errno),
-                                     errno == EACCES ? " (add the user to group video)" : "");
+    for (std::string& path : drm_card_paths(folder)) {
+        const UniqueFd fd(::open(path.c_str(), O_RDWR | O_CLOEXEC));
+        if (!fd) {
+            const int err = errno;
+            cards.push_back({.path = std::move(path),
+                             .status = DrmCardStatus::CannotOpen,
+                             .error = fmt::format("cannot open: {}{}", std::strerror(err),
+                                                  err == EACCES ? " (add the user to group video)" : "")});
             continue;
         }
-        if (drmVersionPtr v = drmGetVersion(fd)) {
-            card.driver = v->name ? v->name : "";
-            drmFreeVersion(v);
-        }
-        drmModeRes* res = drmModeGetResources(fd);
-        if (!res) {
-            card.error = "no display outputs (a render-only GPU)";
-            ::close(fd);
-            continue;
-        }
-        for (int i = 0; i < res->count_connectors; ++i) {
-            drmModeConnector* c = drmModeGetConnector(fd, res->connectors[i]);
-            if (!c) continue;
-            DrmConnectorInfo info{connector_name(*c), c->connection == DRM_MODE_CONNECTED, {}};
-            for (int m = 0; m < c->count_modes; ++m) {
-                const drmModeModeInfo& mode = c->modes[m];
-                std::string text = mode_name(mode);
-                if (mode.type & DRM_MODE_TYPE_PREFERRED)
-                    info.modes.insert(info.modes.begin(), text + " (preferred)");
-                else if (std::find(info.modes.begin(), info.modes.end(), text) == info.modes.end())
-                    info.modes.push_back(text);
-            }
-            card.connectors.push_back(std::move(info));
-            drmModeFreeConnector(c);
-        }
-        drmModeFreeResources(res);
-        ::close(fd);
+        cards.push_back(read_drm_card(fd.get(), std::move(path)));
     }
     return cards;
 }

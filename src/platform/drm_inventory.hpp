@@ -16,10 +16,18 @@ struct DrmConnectorInfo {
     std::vector<std::string> modes;  // "1920x1080@60", preferred first
 };
 
+// What a card node turned out to be.
+enum class DrmCardStatus {
+    Display,     // a KMS device: its connectors are listed (there may be none connected)
+    NoOutputs,   // opened, but it reports no KMS resources: a render-only GPU (or not a DRM device)
+    CannotOpen,  // open(2) failed: permissions, or the node is gone
+};
+
 struct DrmCardInfo {
     std::string path;  // /dev/dri/card0
-    std::string driver;
-    std::string error;  // set when the card could not be read (permissions, not a KMS device)
+    std::string driver;  // "vc4", "virtio_gpu"; empty when the kernel did not say
+    DrmCardStatus status = DrmCardStatus::Display;
+    std::string error;  // why, when status is not Display: "cannot open: Permission denied (...)"
     std::vector<DrmConnectorInfo> connectors;
 };
 
@@ -27,7 +35,11 @@ struct DrmCardInfo {
 // names are left out), as paths.
 std::vector<std::string> drm_card_paths(const std::string& folder = "/dev/dri");
 
-std::vector<DrmCardInfo> list_drm_cards();
+// Reads the card open on `fd` (driver, status Display or NoOutputs, connectors); `fd` stays open.
+DrmCardInfo read_drm_card(int fd, std::string path);
+
+// Every card in `folder`, in drm_card_paths' order, each opened and read, then closed again.
+std::vector<DrmCardInfo> list_drm_cards(const std::string& folder = "/dev/dri");
 
 // "HDMI-A-1", "DP-2", "Virtual-1": the names the kernel and xrandr use, and display.connector takes.
 std::string connector_name(const drmModeConnector& c);

@@ -26,6 +26,7 @@
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
 #include "platform/egl_context.hpp"
+#include "util/unique_fd.hpp"
 
 namespace puddle::platform {
 
@@ -34,32 +35,6 @@ namespace {
 std::string errno_text(int err) {
     return std::error_code(err, std::generic_category()).message();
 }
-
-class UniqueFd {
-public:
-    UniqueFd() = default;
-    explicit UniqueFd(int fd) : fd_(fd) {}
-    UniqueFd(UniqueFd&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
-    UniqueFd& operator=(UniqueFd&& other) noexcept {
-        if (this != &other) {
-            reset();
-            fd_ = std::exchange(other.fd_, -1);
-        }
-        return *this;
-    }
-    UniqueFd(const UniqueFd&) = delete;
-    UniqueFd& operator=(const UniqueFd&) = delete;
-    ~UniqueFd() { reset(); }
-
-    int get() const { return fd_; }
-
-private:
-    void reset() {
-        if (fd_ >= 0) ::close(fd_);
-        fd_ = -1;
-    }
-    int fd_ = -1;
-};
 
 // unique_ptr deleter for a C API's free function.
 template <auto Free>
@@ -84,7 +59,6 @@ Result<UniqueFd> open_card(const std::string& path) {
     return UniqueFd(fd);
 }
 
-// /dev/dri/card0, card1, ... in numeric order (card10 after card2).
 std::vector<ConnectorPtr> get_connectors(int fd, const drmModeRes& res) {
     std::vector<ConnectorPtr> connectors;
     for (int i = 0; i < res.count_connectors; ++i)
@@ -92,6 +66,7 @@ std::vector<ConnectorPtr> get_connectors(int fd, const drmModeRes& res) {
     return connectors;
 }
 
+// A connector that can show a picture: connected, with at least one mode.
 bool is_connected(const drmModeConnector& c) {
     return c.connection == DRM_MODE_CONNECTED && c.count_modes > 0;
 }
@@ -102,18 +77,19 @@ bool acquire_master(int fd) {
 }
 
 // Why a card cannot be used, or nothing when it can (then `connector` names the first connected one).
+// The card is read as `puddle --check` reads it (drm_inventory); only taking master is the probe's own.
 std::optional<std::string> check_card(const std::string& path, std::string& connector) {
     auto fd = open_card(path);
     if (!fd) return fd.error().message.substr(5);  // drop "kms: ", the probe reason has no prefix
-    ResourcesPtr res{drmModeGetResources(fd->get())};
-    if (!res) return fmt::format("{}: cannot modeset (render-only device?)", path);
-    for (const auto& c : get_connectors(fd->get(), *res)) {
-        if (is_connected(*c)) {
-            connector = connector_name(*c);
-            break;
-        }
-    }
-    if (connector.empty()) return fmt::format("{}: no connected connector", path);
+    const DrmCardInfo card = read_drm_card(fd->get(), path);
+    if (card.status == DrmCardStatus::NoOutputs)
+        return fmt::format("{}: cannot modeset (render-only device?)", path);
+    const auto shown =
+        std::find_if(card.connectors.begin(), card.connectors.end(), [](const DrmConnectorInfo& c) {
+            return c.connected && !c.modes.empty();  // as is_connected
+        });
+    if (shown == card.connectors.end()) return fmt::format("{}: no connected connector", path);
+    connector = shown->name;
     if (!acquire_master(fd->get()))
         return fmt::format("{}: held by another process (is a desktop running?)", path);
     drmDropMaster(fd->get());

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 #include "support/test_support.hpp"
@@ -22,6 +23,28 @@ TEST(DrmInventory, CardsComeInTheKernelsNumberOrder) {
 
 TEST(DrmInventory, AMissingFolderHasNoCards) {
     EXPECT_TRUE(drm_card_paths("/nonexistent-puddle-dri").empty());
+}
+
+// --check reads the status, not the message: a card without KMS outputs is no fault (a render-only GPU
+// beside the display one), a card that cannot be opened is. A plain file stands in for the former (it
+// answers no KMS resources either), a dangling link for a node that vanished.
+TEST(DrmInventory, EachCardSaysWhetherItHasOutputsOrCouldNotBeOpened) {
+    test::TempDir dir;
+    std::ofstream(dir / "card10") << "";
+    std::ofstream(dir / "card0") << "";
+    std::filesystem::create_symlink(dir / "gone", dir / "card2");
+    const auto cards = list_drm_cards(dir.path().string());
+    ASSERT_EQ(cards.size(), 3u);
+    const std::string d = dir.path().string() + "/";
+    EXPECT_EQ(cards[0].path, d + "card0");
+    EXPECT_EQ(cards[0].status, DrmCardStatus::NoOutputs);
+    EXPECT_EQ(cards[0].error, "no display outputs (a render-only GPU)");
+    EXPECT_TRUE(cards[0].connectors.empty());
+    EXPECT_EQ(cards[1].path, d + "card2");
+    EXPECT_EQ(cards[1].status, DrmCardStatus::CannotOpen);
+    EXPECT_EQ(cards[1].error, "cannot open: No such file or directory");
+    EXPECT_EQ(cards[2].path, d + "card10");
+    EXPECT_EQ(cards[2].status, DrmCardStatus::NoOutputs);
 }
 
 TEST(DrmInventory, NamesAConnectorAndAModeAsTheKernelAndTheConfigDo) {
