@@ -13,22 +13,22 @@ using params::ParamId;
 
 AnalyticSource sample_analytic_source(const params::Params& params, int slot, int slots, double now,
                                       int field_resolution) {
-    const double lifetime = params.f(ParamId::analytic_lifetime);
+    const double lifetime = params.get<ParamId::analytic_lifetime>();
     const double offset = static_cast<double>(slot) / static_cast<double>(std::max(slots, 1));
     const double life = std::floor(now / lifetime - offset);
     const double birth = (life + offset) * lifetime;
     const DropSample drop =
-        sample_drop(static_cast<std::uint32_t>(params.i(ParamId::rain_seed)), slot,
-                    static_cast<std::int64_t>(life), params.f(ParamId::analytic_amplitude));
+        sample_drop(static_cast<std::uint32_t>(params.get<ParamId::rain_seed>()), slot,
+                    static_cast<std::int64_t>(life), params.get<ParamId::analytic_amplitude>());
     return {.position = drop.position * static_cast<float>(field_resolution),
             .age = static_cast<float>(now - birth),
             .amplitude = drop.strength,
-            .spatial_decay = params.f(ParamId::analytic_spatial_decay),
-            .temporal_decay = params.f(ParamId::analytic_temporal_decay),
-            .frequency_decay = params.f(ParamId::analytic_frequency_decay),
-            .angular_frequency = params.f(ParamId::analytic_angular_frequency),
-            .speed = params.f(ParamId::analytic_speed),
-            .max_phase = static_cast<float>(2.0 * std::numbers::pi * params.i(ParamId::analytic_rings))};
+            .spatial_decay = params.get<ParamId::analytic_spatial_decay>(),
+            .temporal_decay = params.get<ParamId::analytic_temporal_decay>(),
+            .frequency_decay = params.get<ParamId::analytic_frequency_decay>(),
+            .angular_frequency = params.get<ParamId::analytic_angular_frequency>(),
+            .speed = params.get<ParamId::analytic_speed>(),
+            .max_phase = static_cast<float>(2.0 * std::numbers::pi * params.get<ParamId::analytic_rings>())};
 }
 
 double analytic_height(const AnalyticSource& s, double d) {
@@ -102,7 +102,7 @@ void analytic_ripple_system(gpu::Device& device, const params::Params& params, c
         if (!failed_before) spdlog::error("{}", r.error().message);  // one line, then draw nothing
         return;
     }
-    ripples.count = std::min(params.i(ParamId::analytic_sources), max_analytic_sources);
+    ripples.count = std::min(params.get<ParamId::analytic_sources>(), max_analytic_sources);
     for (int i = 0; i < ripples.count; ++i)
         set_analytic_source(
             ripples, i, sample_analytic_source(params, i, ripples.count, clock.sim_time, surface.resolution));

@@ -237,10 +237,10 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
     const glm::vec3 axis = glm::normalize(glm::vec3(-1.0f, 0.7f, 0.0f));
     const glm::vec3 right = glm::normalize(glm::cross(axis, glm::vec3(0, 1, 0)));
     const glm::vec3 up = glm::cross(right, axis);
-    const bool ball = params.s(ParamId::environment_camera_mapping) == "mirror_ball";
+    const bool ball = params.get<ParamId::environment_camera_mapping>() == params::CameraMapping::mirror_ball;
     const float aspect =
         static_cast<float>(env.colour.width()) / static_cast<float>(std::max(env.colour.height(), 1));
-    const float tan_half = std::tan(glm::radians(params.f(ParamId::environment_camera_fov)) * 0.5f);
+    const float tan_half = std::tan(glm::radians(params.get<ParamId::environment_camera_fov>()) * 0.5f);
     for (int face = 0; face < 6; ++face) {
         auto pass = device.begin_pass(
             {.label = "camera cube face",

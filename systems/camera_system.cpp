@@ -8,17 +8,27 @@ using params::ParamId;
 
 namespace {
 
+camera::FormatPreference format_preference(params::CameraFormat format) {
+    switch (format) {
+        case params::CameraFormat::yuyv: return camera::FormatPreference::Yuyv;
+        case params::CameraFormat::nv12: return camera::FormatPreference::Nv12;
+        case params::CameraFormat::mjpeg: return camera::FormatPreference::Mjpeg;
+        case params::CameraFormat::automatic: break;
+    }
+    return camera::FormatPreference::Auto;
+}
+
 // Compared field by field each frame, so the steady state builds no strings.
 bool still_requested(const params::Params& p, const camera::CaptureRequest& r) {
-    return p.s(ParamId::environment_camera_device) == r.device &&
-           p.i(ParamId::environment_camera_width) == r.width &&
-           p.i(ParamId::environment_camera_height) == r.height &&
-           static_cast<double>(p.f(ParamId::environment_camera_fps)) == r.fps &&
-           camera::parse_format_preference(p.s(ParamId::environment_camera_format)) == r.format;
+    return p.get<ParamId::environment_camera_device>() == r.device &&
+           p.get<ParamId::environment_camera_width>() == r.width &&
+           p.get<ParamId::environment_camera_height>() == r.height &&
+           static_cast<double>(p.get<ParamId::environment_camera_fps>()) == r.fps &&
+           format_preference(p.get<ParamId::environment_camera_format>()) == r.format;
 }
 
 bool wants_camera(const params::Params& params) {
-    return params.s(ParamId::environment_source) == "camera";
+    return params.get<ParamId::environment_source>() == params::EnvironmentSource::camera;
 }
 
 // The worker's job: close `closing` (STREAMOFF, munmap, close: before the open, which may need the
@@ -87,11 +97,11 @@ void collect(CameraFeed& feed, CameraOpening done) {
 }  // namespace
 
 camera::CaptureRequest camera_request(const params::Params& params) {
-    return {.device = params.s(ParamId::environment_camera_device),
-            .width = params.i(ParamId::environment_camera_width),
-            .height = params.i(ParamId::environment_camera_height),
-            .fps = params.f(ParamId::environment_camera_fps),
-            .format = camera::parse_format_preference(params.s(ParamId::environment_camera_format)),
+    return {.device = params.get<ParamId::environment_camera_device>(),
+            .width = params.get<ParamId::environment_camera_width>(),
+            .height = params.get<ParamId::environment_camera_height>(),
+            .fps = params.get<ParamId::environment_camera_fps>(),
+            .format = format_preference(params.get<ParamId::environment_camera_format>()),
             .export_dmabuf = true};
 }
 
@@ -123,7 +133,7 @@ void camera_feed_system(CameraFeed& feed, const params::Params& params, const ec
         return;
     }
     if (feed.source && !still_requested(params, feed.request)) {
-        spdlog::info("camera: settings changed; reopening {}", params.s(ParamId::environment_camera_device));
+        spdlog::info("camera: settings changed; reopening {}", params.get<ParamId::environment_camera_device>());
         close_feed(feed, env, camera_request(params));
         feed.retry_at = feed.now + camera_retry_seconds;
         return;

@@ -41,11 +41,11 @@ DropSample sample_drop(std::uint32_t seed, int slot, std::int64_t cycle, float i
 void drop_system(const params::Params& params, const FrameClock& clock, ecs::World& world, DropSlots& slots,
                  LiveDrops& live) {
     using params::ParamId;
-    const int count = std::min(params.i(ParamId::rain_drop_count), max_drops);
-    const double speed = params.f(ParamId::rain_speed);
-    const auto seed = static_cast<std::uint32_t>(params.i(ParamId::rain_seed));
-    const float intensity = params.f(ParamId::rain_intensity);
-    const float resolution = static_cast<float>(params.i(ParamId::wave_resolution));
+    const int count = std::min(params.get<ParamId::rain_drop_count>(), max_drops);
+    const double speed = params.get<ParamId::rain_speed>();
+    const auto seed = static_cast<std::uint32_t>(params.get<ParamId::rain_seed>());
+    const float intensity = params.get<ParamId::rain_intensity>();
+    const float resolution = static_cast<float>(params.get<ParamId::wave_resolution>());
     const double scaled = clock.sim_time * speed;
 
     live.count = 0;

@@ -46,8 +46,8 @@ Result<void> prepare_faces(assets::CubeImages& cube, const EnvironmentRequest& r
 }  // namespace
 
 EnvironmentRequest EnvironmentRequest::from(const params::Params& params, const gpu::Capabilities& caps) {
-    return {.image = params.s(ParamId::environment_image),
-            .face_size = params.i(ParamId::environment_face_size),
+    return {.image = params.get<ParamId::environment_image>(),
+            .face_size = params.get<ParamId::environment_face_size>(),
             .max_cube_map_size = caps.max_cube_map_size,
             .max_texture_size = caps.max_texture_size,
             .half_float_render_targets = caps.half_float_render_targets};

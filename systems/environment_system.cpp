@@ -42,7 +42,7 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
 int fallback_floor(const Environment& shown, const params::Params& params) {
     constexpr int new_image_floor = 256;
     if (!shown.cube) return EnvironmentBuild::no_fallback;
-    if (shown.requested_image == params.s(ParamId::environment_image)) return shown.cube.width() * 2;
+    if (shown.requested_image == params.get<ParamId::environment_image>()) return shown.cube.width() * 2;
     return new_image_floor;
 }
 
@@ -50,8 +50,8 @@ int fallback_floor(const Environment& shown, const params::Params& params) {
 void start_environment_reload(const gpu::Device& device, const params::Params& params, Environment& env,
                               EnvironmentReload& reload) {
     reload.fallback_floor = fallback_floor(env, params);
-    env.requested_image = params.s(ParamId::environment_image);
-    env.requested_face_size = params.i(ParamId::environment_face_size);
+    env.requested_image = params.get<ParamId::environment_image>();
+    env.requested_face_size = params.get<ParamId::environment_face_size>();
     reload.environment_build.reset();  // a half-built older one is dropped
     const EnvironmentRequest request = EnvironmentRequest::from(params, device.caps());
     reload.environment.submit([request](std::stop_token stop) { return prepare_environment(request, stop); });
@@ -91,8 +91,8 @@ Result<void> load_environment(gpu::Device& device, const params::Params& params,
     }
     Environment e;
     build.finish(device, e);
-    e.requested_image = params.s(ParamId::environment_image);
-    e.requested_face_size = params.i(ParamId::environment_face_size);
+    e.requested_image = params.get<ParamId::environment_image>();
+    e.requested_face_size = params.get<ParamId::environment_face_size>();
     env = std::move(e);
     return {};
 }
@@ -114,7 +114,7 @@ Result<PreparedGround> prepare_ground(const std::string& path, int max_texture_s
 }
 
 Result<void> load_ground(gpu::Device& device, const params::Params& params, Ground& ground) {
-    const std::string& path = params.s(ParamId::ground_image);
+    const std::string& path = params.get<ParamId::ground_image>();
     auto prepared = prepare_ground(path, device.caps().max_texture_size);
     if (!prepared) return prepared.error();
     return upload_ground(device, std::move(prepared).value(), path, ground);
@@ -122,13 +122,13 @@ Result<void> load_ground(gpu::Device& device, const params::Params& params, Grou
 
 void environment_reload_system(gpu::Device& device, const params::Params& params, Environment& env,
                                Ground& ground, EnvironmentReload& reload) {
-    if (params.s(ParamId::environment_image) != env.requested_image ||
-        params.i(ParamId::environment_face_size) != env.requested_face_size)
+    if (params.get<ParamId::environment_image>() != env.requested_image ||
+        params.get<ParamId::environment_face_size>() != env.requested_face_size)
         start_environment_reload(device, params, env, reload);
     continue_environment_reload(device, env, reload);
 
-    if (params.s(ParamId::ground_image) != ground.requested_image) {
-        ground.requested_image = params.s(ParamId::ground_image);
+    if (params.get<ParamId::ground_image>() != ground.requested_image) {
+        ground.requested_image = params.get<ParamId::ground_image>();
         const int max_size = device.caps().max_texture_size;
         reload.ground.submit([path = ground.requested_image, max_size](std::stop_token) {
             return prepare_ground(path, max_size);

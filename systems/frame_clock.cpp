@@ -6,7 +6,7 @@ namespace puddle::systems {
 
 void frame_clock_system(const ecs::FrameTime& time, const params::Params& params, FrameClock& clock) {
     using params::ParamId;
-    const double step = 1.0 / static_cast<double>(params.f(ParamId::wave_steps_per_second));
+    const double step = 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>());
     if (step != clock.step_seconds) {
         clock.epoch_time = clock.sim_time;
         clock.epoch_step = clock.step_index;

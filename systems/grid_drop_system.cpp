@@ -13,8 +13,8 @@ namespace puddle::systems {
 using params::ParamId;
 
 float grid_cell_texels(const params::Params& params, int field_resolution) {
-    const double cells = std::max(1.0, static_cast<double>(params.f(ParamId::grid_drops_per_second)) *
-                                           static_cast<double>(params.f(ParamId::grid_cycle)));
+    const double cells = std::max(1.0, static_cast<double>(params.get<ParamId::grid_drops_per_second>()) *
+                                           static_cast<double>(params.get<ParamId::grid_cycle>()));
     return static_cast<float>(field_resolution / std::sqrt(cells));
 }
 
@@ -37,7 +37,7 @@ bool request_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& 
 void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
                     Surface& surface, glm::ivec2 only_cell) {
     // Cycle count and fraction split in double: a float time would lose the fraction after weeks.
-    const double cycles = now / static_cast<double>(params.f(ParamId::grid_cycle));
+    const double cycles = now / static_cast<double>(params.get<ParamId::grid_cycle>());
     const double base = std::floor(cycles);
     auto pass = device.begin_pass({.label = "grid drops",
                                    .target = {&surface.texture, {surface.resolution, surface.resolution}},
@@ -49,7 +49,7 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
         // cycle then wraps exactly where this count does, so no drop jumps at any uptime.
         .set("u_cycle_base", static_cast<int>(static_cast<std::uint32_t>(std::fmod(base, 4294967296.0))))
         .set("u_cycle_fraction", static_cast<float>(cycles - base))
-        .set("u_seed", params.i(ParamId::rain_seed))
+        .set("u_seed", params.get<ParamId::rain_seed>())
         .set("u_only_cell", only_cell);
     pass.draw_fullscreen();
 }

@@ -11,21 +11,21 @@ void look_switch_system(gpu::Device& device, const params::Params& params, const
     if (wanted == shown) return;
     bool ready = true;
     switch (wanted.scene) {
-        case Scene::Ocean:
+        case Scene::ocean:
             ready = request_ocean(device, ocean);
             break;
-        case Scene::Street:
+        case Scene::street:
             ready = request_street(device, street);
             break;
-        case Scene::Puddle:
+        case Scene::puddle:
             switch (wanted.drops) {
-                case DropModel::Analytic:
+                case DropModel::analytic:
                     ready = request_analytic_ripples(device, surface, ripples);
                     break;
-                case DropModel::Grid:
+                case DropModel::grid:
                     ready = request_grid_drops(device, surface, grid);
                     break;
-                case DropModel::Pulse:
+                case DropModel::pulse:
                     break;  // its passes are built with the wave field
             }
             break;

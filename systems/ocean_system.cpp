@@ -42,12 +42,12 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
     const gpu::FrameTarget& frame = target.target;
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
     const CameraBasis cam =
-        camera_basis(params.v3(ParamId::ocean_camera_position), params.v3(ParamId::ocean_camera_target),
-                     params.f(ParamId::camera_fov), aspect);
+        camera_basis(params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
+                     params.get<ParamId::camera_fov>(), aspect);
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(ocean.pass.pipeline);
     set_param_uniforms(pass, ocean.pass.params, params);
-    const OceanTime ot = ocean_time(clock.sim_time, params.f(ParamId::ocean_speed));
+    const OceanTime ot = ocean_time(clock.sim_time, params.get<ParamId::ocean_speed>());
     pass.set("u_octave_shift", std::span<const glm::vec4>(ot.shift))
         .set("u_octave_cells", std::span<const glm::ivec2>(ot.cells))
         .set("u_cam_forward", cam.forward)

@@ -28,8 +28,8 @@ Result<void> build_pipelines(gpu::Device& device, OutputCanvas& r) {
 gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& r,
                                     gpu::FrameTarget display) {
     r.display = display;
-    const int degrees = std::stoi(params.s(params::ParamId::display_rotation));
-    const float scale = params.f(params::ParamId::render_scale);
+    const int degrees = 90 * static_cast<int>(params.get<params::ParamId::display_rotation>());
+    const float scale = params.get<params::ParamId::render_scale>();
     r.quarter_turns = degrees / 90;
     const glm::ivec2 turned = r.quarter_turns % 2 ? glm::ivec2(display.size.y, display.size.x) : display.size;
     const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));

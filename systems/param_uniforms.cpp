@@ -2,6 +2,8 @@
 
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
 namespace puddle::systems {
 
@@ -44,20 +46,19 @@ void set_param_uniforms(gpu::RenderPass& pass, const ParamBinding& binding, cons
     using params::ParamKind;
     for (const ParamBinding::Slot& slot : binding.slots) {
         const params::ParamDecl& d = *slot.decl;
-        switch (d.kind) {
-            case ParamKind::Float: pass.set(slot.location, params.f(d.id)); break;
-            case ParamKind::Int: pass.set(slot.location, params.i(d.id)); break;
-            case ParamKind::Bool: pass.set(slot.location, params.b(d.id) ? 1 : 0); break;
-            case ParamKind::Vec3:
-            case ParamKind::Color: pass.set(slot.location, params.v3(d.id)); break;
-            case ParamKind::Enum: {
-                const std::string& value = params.s(d.id);
-                for (std::size_t k = 0; k < d.choices.size(); ++k)
-                    if (d.choices[k] == value) pass.set(slot.location, static_cast<int>(k));
-                break;
-            }
-            case ParamKind::Path: break;
+        if (d.kind == ParamKind::Enum) {  // the shader sees the choice's index (TONEMAP_* and the like)
+            pass.set(slot.location, params.choice_index(d.id));
+            continue;
         }
+        std::visit(
+            [&](const auto& value) {
+                using T = std::decay_t<decltype(value)>;
+                if constexpr (std::is_same_v<T, bool>)
+                    pass.set(slot.location, value ? 1 : 0);
+                else if constexpr (!std::is_same_v<T, std::string>)  // paths have no uniform
+                    pass.set(slot.location, value);
+            },
+            params.at(d.id));
     }
 }
 

@@ -37,15 +37,15 @@ Result<void> build_field_and_surface(gpu::Device& device, const Params& params, 
     surface = std::move(new_surface);
     spdlog::info("wave: {}x{} field, {} ({} steps/s)", field.resolution, field.resolution,
                  field.fixed_point ? "fixed-point RG32I (no float render targets)" : "float RG32F",
-                 params.f(ParamId::wave_steps_per_second));
+                 params.get<ParamId::wave_steps_per_second>());
     return {};
 }
 
 // Input stage: a new resolution or field format needs new textures; the old field is dropped. One that
 // cannot be made (too big for GPU memory) logs one line and keeps the old field, until the values change.
 void wave_rebuild_system(gpu::Device& device, const Params& params, WaveField& field, Surface& surface) {
-    const bool want_fixed = !(params.b(ParamId::wave_float_field) && device.caps().float_render_targets);
-    const WaveField::Request wanted{params.i(ParamId::wave_resolution), want_fixed};
+    const bool want_fixed = !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
+    const WaveField::Request wanted{params.get<ParamId::wave_resolution>(), want_fixed};
     if (field.resolution == wanted.resolution && field.fixed_point == want_fixed) {
         field.requested = {};  // back to what is shown: a later edit to the failed values tries again
         return;
@@ -63,17 +63,17 @@ Result<void> prepare_selected_look(ecs::World& world) {
     auto& device = world.resource<gpu::Device>();
     const Params& params = world.resource<Params>();
     const Surface& surface = world.resource<Surface>();
-    if (params.b(ParamId::overlay_rain))
+    if (params.get<ParamId::overlay_rain>())
         if (auto r = prepare_rain_overlay(device, world.resource<RainOverlay>()); !r) return r;
     switch (selected_scene(params)) {
-        case Scene::Ocean: return prepare_ocean(device, world.resource<OceanRenderer>());
-        case Scene::Street: return prepare_street(device, world.resource<StreetRenderer>());
-        case Scene::Puddle: break;
+        case Scene::ocean: return prepare_ocean(device, world.resource<OceanRenderer>());
+        case Scene::street: return prepare_street(device, world.resource<StreetRenderer>());
+        case Scene::puddle: break;
     }
     switch (selected_drop_model(params)) {
-        case DropModel::Analytic: return prepare_analytic_ripples(device, surface, world.resource<AnalyticRipples>());
-        case DropModel::Grid: return prepare_grid_drops(device, surface, world.resource<GridDrops>());
-        case DropModel::Pulse: break;
+        case DropModel::analytic: return prepare_analytic_ripples(device, surface, world.resource<AnalyticRipples>());
+        case DropModel::grid: return prepare_grid_drops(device, surface, world.resource<GridDrops>());
+        case DropModel::pulse: break;
     }
     return {};
 }
@@ -127,11 +127,11 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
 
     schedule.add(Stage::Render, "surface", surface_system).run_if(wave_field_in_use());
     schedule.add(Stage::Render, "camera environment", camera_environment_system);
-    schedule.add(Stage::Render, "analytic ripples", analytic_ripple_system).run_if(drops_are(DropModel::Analytic));
-    schedule.add(Stage::Render, "grid drops", grid_drop_system).run_if(drops_are(DropModel::Grid));
-    schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::Puddle));
-    schedule.add(Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::Ocean));
-    schedule.add(Stage::Render, "street", street_system).run_if(look_is(Scene::Street));
+    schedule.add(Stage::Render, "analytic ripples", analytic_ripple_system).run_if(drops_are(DropModel::analytic));
+    schedule.add(Stage::Render, "grid drops", grid_drop_system).run_if(drops_are(DropModel::grid));
+    schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::puddle));
+    schedule.add(Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::ocean));
+    schedule.add(Stage::Render, "street", street_system).run_if(look_is(Scene::street));
     schedule.add(Stage::Render, "rain overlay", rain_overlay_system);
     return {};
 }

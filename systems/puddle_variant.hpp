@@ -20,12 +20,12 @@ struct PuddleVariant {
     bool raymarch = false;
     GroundKind ground = GroundKind::Checkerboard;
     bool env_rgbm = false;
-    int tonemap = 0;  // index into look.tonemap's choices, as TONEMAP_* in colour.glsl
+    params::Tonemap tonemap = params::Tonemap::clip;  // its index is TONEMAP_* in colour.glsl
 
     bool operator==(const PuddleVariant&) const = default;
 };
 
-inline constexpr std::size_t tonemap_count = 4;
+inline constexpr std::size_t tonemap_count = params::choice_count<params::Tonemap>;
 inline constexpr std::size_t puddle_variant_count = 2 * 3 * 2 * tonemap_count;
 
 // True when turbidity leaves the ground less than 1/4096 of its brightness even along the shortest path

@@ -26,15 +26,15 @@ Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) {
 
 void rain_overlay_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                          RainOverlay& rain, const RenderTarget& target) {
-    if (!params.b(ParamId::overlay_rain)) return;
+    if (!params.get<ParamId::overlay_rain>()) return;
     if (!rain.pass.request(device, rain_desc)) return;  // switched on live: drawn once built
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "rain streaks", .target = frame, .load = gpu::LoadOp::Load});
     pass.set_pipeline(rain.pass.pipeline);
     set_param_uniforms(pass, rain.pass.params, params);
-    pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.f(ParamId::overlay_rain_speed)))
+    pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.get<ParamId::overlay_rain_speed>()))
         .set("u_resolution", glm::vec2(frame.size))
-        .set("u_seed", params.i(ParamId::rain_seed));
+        .set("u_seed", params.get<ParamId::rain_seed>());
     pass.draw_fullscreen();
 }
 

@@ -64,9 +64,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
 
     // Everything uniform across the screen is worked out here once, not per pixel.
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const CameraBasis cam = camera_basis(params.v3(ParamId::camera_position), params.v3(ParamId::camera_target),
-                                         params.f(ParamId::camera_fov), aspect);
-    const float a = params.f(ParamId::environment_rotation);
+    const CameraBasis cam = camera_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
+                                         params.get<ParamId::camera_fov>(), aspect);
+    const float a = params.get<ParamId::environment_rotation>();
     // Column-major rotation about +Y.
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
 
@@ -81,9 +81,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_up", cam.up)
         .set("u_cam_scale", cam.scale)
         .set("u_env_matrix", env_matrix)
-        .set("u_env_scale", std::exp2(params.f(ParamId::environment_exposure)))
+        .set("u_env_scale", std::exp2(params.get<ParamId::environment_exposure>()))
         .set("u_slope_scale", static_cast<float>(surface.resolution) * 0.5f /
-                                  glm::vec2(params.v3(ParamId::puddle_size).x, params.v3(ParamId::puddle_size).z));
+                                  glm::vec2(params.get<ParamId::puddle_size>().x, params.get<ParamId::puddle_size>().z));
     pass.draw_fullscreen();
 }
 

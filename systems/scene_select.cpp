@@ -4,19 +4,9 @@ namespace puddle::systems {
 
 using params::ParamId;
 
-Scene selected_scene(const params::Params& params) {
-    const std::string& s = params.s(ParamId::scene_kind);
-    if (s == "ocean") return Scene::Ocean;
-    if (s == "street") return Scene::Street;
-    return Scene::Puddle;
-}
+Scene selected_scene(const params::Params& params) { return params.get<ParamId::scene_kind>(); }
 
-DropModel selected_drop_model(const params::Params& params) {
-    const std::string& s = params.s(ParamId::drops_model);
-    if (s == "analytic") return DropModel::Analytic;
-    if (s == "grid") return DropModel::Grid;
-    return DropModel::Pulse;
-}
+DropModel selected_drop_model(const params::Params& params) { return params.get<ParamId::drops_model>(); }
 
 }  // namespace puddle::systems
 
@@ -28,19 +18,19 @@ ShownLook selected_look(const params::Params& params) {
 
 std::string describe(const ShownLook& look) {
     switch (look.scene) {
-        case Scene::Ocean:
+        case Scene::ocean:
             return "ocean";
-        case Scene::Street:
+        case Scene::street:
             return "street";
-        case Scene::Puddle:
+        case Scene::puddle:
             break;
     }
     switch (look.drops) {
-        case DropModel::Analytic:
+        case DropModel::analytic:
             return "puddle with analytic drops";
-        case DropModel::Grid:
+        case DropModel::grid:
             return "puddle with grid drops";
-        case DropModel::Pulse:
+        case DropModel::pulse:
             break;
     }
     return "puddle with pulse drops";
@@ -50,39 +40,20 @@ std::string describe(const ShownLook& look) {
 
 namespace puddle::systems {
 
-namespace {
-const char* scene_name(Scene scene) {
-    switch (scene) {
-        case Scene::Ocean: return "ocean";
-        case Scene::Street: return "street";
-        case Scene::Puddle: break;
-    }
-    return "puddle";
-}
-const char* drops_name(DropModel drops) {
-    switch (drops) {
-        case DropModel::Analytic: return "analytic";
-        case DropModel::Grid: return "grid";
-        case DropModel::Pulse: break;
-    }
-    return "pulse";
-}
-}  // namespace
-
 ecs::RunCondition look_is(Scene scene) {
-    return {std::string("look is ") + scene_name(scene),
+    return {"look is " + std::string(params::choice_name(scene)),
             [scene](ecs::World& w) { return w.resource<ShownLook>().scene == scene; }};
 }
 
 ecs::RunCondition drops_are(DropModel drops) {
-    return {std::string("drops are ") + drops_name(drops), [drops](ecs::World& w) {
+    return {"drops are " + std::string(params::choice_name(drops)), [drops](ecs::World& w) {
                 const ShownLook& look = w.resource<ShownLook>();
-                return look.scene == Scene::Puddle && look.drops == drops;
+                return look.scene == Scene::puddle && look.drops == drops;
             }};
 }
 
 ecs::RunCondition wave_field_in_use() {
-    ecs::RunCondition pulse = drops_are(DropModel::Pulse);
+    ecs::RunCondition pulse = drops_are(DropModel::pulse);
     pulse.name = "the wave field is in use";
     return pulse;
 }

@@ -9,16 +9,16 @@
 
 namespace puddle::systems {
 
-enum class Scene { Puddle, Ocean, Street };
-enum class DropModel { Pulse, Analytic, Grid };
+using Scene = params::SceneKind;      // scene.kind: puddle, ocean, street
+using DropModel = params::DropsModel;  // drops.model: pulse, analytic, grid
 
 Scene selected_scene(const params::Params& params);
 DropModel selected_drop_model(const params::Params& params);
 
 // Resource: the look the render systems draw (their run conditions read it).
 struct ShownLook {
-    Scene scene = Scene::Puddle;
-    DropModel drops = DropModel::Pulse;  // used while the scene is the puddle
+    Scene scene = Scene::puddle;
+    DropModel drops = DropModel::pulse;  // used while the scene is the puddle
     bool operator==(const ShownLook&) const = default;
 };
 

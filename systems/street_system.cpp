@@ -40,7 +40,7 @@ StreetTime street_time(const params::Params& params, double seconds) {
                           periodic_phase(seconds, 2.3, two_pi)};
     // The clouds drift street.cloud_drift screens per second; the fbm's octave i samples 3 * 2.03^i
     // cells per screen.
-    const double cloud_drift = params.f(ParamId::street_cloud_drift);
+    const double cloud_drift = params.get<ParamId::street_cloud_drift>();
     double cells_per_screen = 3.0;
     for (std::size_t i = 0; i < st.cloud_shift.size(); ++i, cells_per_screen *= 2.03) {
         const LatticeShift shift = lattice_shift(seconds, cloud_drift * cells_per_screen);
@@ -48,7 +48,7 @@ StreetTime street_time(const params::Params& params, double seconds) {
         st.cloud_cells[i] = shift.cells;
     }
     // The ground drifts street.ground_drift units per second under noises of 4, 8 and 40 cells per unit.
-    const double drift = params.f(ParamId::street_ground_drift);
+    const double drift = params.get<ParamId::street_ground_drift>();
     constexpr std::array<double, 3> ground_cells_per_unit{4.0, 8.0, 40.0};
     for (int i = 0; i < 3; ++i) {
         const LatticeShift shift =
@@ -56,7 +56,7 @@ StreetTime street_time(const params::Params& params, double seconds) {
         st.ground_shift[i] = shift.fraction;
         st.ground_cells[static_cast<std::size_t>(i)] = shift.cells;
     }
-    const auto seed = static_cast<std::uint32_t>(params.i(ParamId::rain_seed));
+    const auto seed = static_cast<std::uint32_t>(params.get<ParamId::rain_seed>());
     set_sources(street_ripple_kind, seed, seconds, st.ripple_age, st.ripple_repeat);
     set_sources(street_splash_kind, seed, seconds, st.splash_age, st.splash_repeat);
     return st;

@@ -10,8 +10,8 @@ namespace puddle::systems {
 using params::ParamId;
 
 Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field) {
-    const int n = params.i(ParamId::wave_resolution);
-    const bool fixed_point = !(params.b(ParamId::wave_float_field) && device.caps().float_render_targets);
+    const int n = params.get<ParamId::wave_resolution>();
+    const bool fixed_point = !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
     const gpu::TextureFormat format = fixed_point ? gpu::TextureFormat::RG32I : gpu::TextureFormat::RG32F;
     // A new resolution needs new textures only: compiling the step again on every rebuild grew the process
     // by about 65 KiB each time on llvmpipe (puddle-soak, README "Soak"). The old field is taken from only

@@ -162,9 +162,9 @@ int run(int argc, const char* const* argv) {
     }
 
     using params::ParamId;
-    o.display.card = params->s(ParamId::display_card);
-    o.display.connector = params->s(ParamId::display_connector);
-    o.display.mode = params->s(ParamId::display_mode);
+    o.display.card = params->get<ParamId::display_card>();
+    o.display.connector = params->get<ParamId::display_connector>();
+    o.display.mode = params->get<ParamId::display_mode>();
 
     spdlog::info("puddle {} starting", version());
     // Before any thread starts, so that every thread (Mesa's too) inherits SIGINT, SIGTERM and SIGHUP blocked

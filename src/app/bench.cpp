@@ -364,9 +364,9 @@ void bench_drop_pass(benchmark::State& state, const Look& look) {
     auto& clock = w.resource<systems::FrameClock>();
     auto& surface = w.resource<systems::Surface>();
     measure(state, device, [&] {
-        if (systems::selected_drop_model(params) == systems::DropModel::Analytic)
+        if (systems::selected_drop_model(params) == systems::DropModel::analytic)
             systems::analytic_ripple_system(device, params, clock, w.resource<systems::AnalyticRipples>(), surface);
-        else if (systems::selected_drop_model(params) == systems::DropModel::Grid)
+        else if (systems::selected_drop_model(params) == systems::DropModel::grid)
             systems::grid_drop_system(device, params, clock, w.resource<systems::GridDrops>(), surface);
     });
     restore_default_look(params);
@@ -428,7 +428,7 @@ void print_summary(const Collector& c) {
     std::printf("\nPuddle passes, ms (x floor of the same size)\n  GL:   %s\n  CPU:  %s\n  Load: %s\n\n%-20s",
                 renderer.c_str(), cpu_model().c_str(), load_average().c_str(), "");
     for (glm::ivec2 s : sizes) std::printf("%20s", size_name(s).c_str());
-    const std::string wave = fmt::format("wave_step/{}", Params{}.i(ParamId::wave_resolution));
+    const std::string wave = fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>());
     for (const std::string& key : {std::string("floor"), wave, std::string("surface"), std::string("render/intersect"),
                                    std::string("render/raymarch"), std::string("frame/intersect"),
                                    std::string("frame/raymarch")}) {
@@ -477,7 +477,7 @@ gpu::ShaderCost shader_cost(const char* method) {
     v.raymarch = std::string(method) == "raymarch";
     auto shader = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
     if (!shader) return {};
-    return gpu::estimate_shader_cost(shader->source, Params{}.i(ParamId::render_march_steps));
+    return gpu::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
 }
 
 Figures figures(const Collector& c) {
@@ -520,7 +520,7 @@ void register_all() {
         const std::string n = size_name(s);
         add("floor/" + n, [s](benchmark::State& st) { bench_floor(st, s); });
         if (s == sizes[0])
-            add(fmt::format("wave_step/{}", Params{}.i(ParamId::wave_resolution)),
+            add(fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>()),
                 [s](benchmark::State& st) { bench_wave_step(st, s); });
         add("surface/" + n, [s](benchmark::State& st) { bench_surface(st, s); });
         for (const char* m : methods)

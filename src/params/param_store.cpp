@@ -14,7 +14,17 @@ std::string_view source_name(ParamSource s) {
 }
 
 Params::Params() {
-    for (const ParamDecl& d : param_decls()) values_[index(d.id)] = d.default_value;
+    for (const ParamDecl& d : param_decls()) store(index(d.id), d.default_value);
+}
+
+void Params::store(std::size_t k, ParamValue value) {
+    values_[k] = std::move(value);
+    const ParamDecl& d = param_decls()[k];
+    if (d.kind != ParamKind::Enum) return;
+    // Values are validated before they reach Params, so the choice is always found.
+    const auto& text = std::get<std::string>(values_[k]);
+    for (std::size_t c = 0; c < d.choices.size(); ++c)
+        if (d.choices[c] == text) choices_[k] = static_cast<std::uint8_t>(c);
 }
 
 bool Params::set(ParamId id, ParamValue value, ParamSource from) {
@@ -22,7 +32,7 @@ bool Params::set(ParamId id, ParamValue value, ParamSource from) {
     if (from < sources_[k]) return false;
     sources_[k] = from;
     if (values_[k] != value) {
-        values_[k] = std::move(value);
+        store(k, std::move(value));
         ++revision_;
     }
     return true;
@@ -32,7 +42,11 @@ void Params::replace_with(const Params& next) {
     bool changed = false;
     for (std::size_t k = 0; k < param_count; ++k) {
         sources_[k] = next.sources_[k];
-        if (values_[k] != next.values_[k]) values_[k] = next.values_[k], changed = true;
+        if (values_[k] != next.values_[k]) {
+            values_[k] = next.values_[k];
+            choices_[k] = next.choices_[k];
+            changed = true;
+        }
     }
     if (changed) ++revision_;
 }

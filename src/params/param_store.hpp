@@ -6,9 +6,12 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include <glm/vec3.hpp>
 
+#include "params/param_types.hpp"
 #include "params/registry.hpp"
 
 namespace puddle::params {
@@ -21,12 +24,23 @@ class Params {
 public:
     Params();  // every value at its declared default
 
-    bool b(ParamId id) const { return std::get<bool>(at(id)); }
-    int i(ParamId id) const { return std::get<int>(at(id)); }
-    float f(ParamId id) const { return std::get<float>(at(id)); }
-    glm::vec3 v3(ParamId id) const { return std::get<glm::vec3>(at(id)); }
-    const std::string& s(ParamId id) const { return std::get<std::string>(at(id)); }
+    // The value, as its declared type (params/param_types.hpp): bool, int, float, glm::vec3, the
+    // parameter's enum, or const std::string& for a path. Never throws: the type comes from the same
+    // declaration as the stored value.
+    template <ParamId id>
+    decltype(auto) get() const {
+        using T = ParamType<id>;
+        if constexpr (std::is_enum_v<T>)
+            return static_cast<T>(choices_[index(id)]);
+        else if constexpr (std::is_same_v<T, std::string>)
+            return static_cast<const std::string&>(*std::get_if<T>(&values_[index(id)]));
+        else
+            return T(*std::get_if<T>(&values_[index(id)]));
+    }
+    // For code over every parameter (docs, uniforms, state): the value as declared data, and an enum's
+    // choice as its index in decl(id).choices.
     const ParamValue& at(ParamId id) const { return values_[index(id)]; }
+    int choice_index(ParamId id) const { return choices_[index(id)]; }
     ParamSource source(ParamId id) const { return sources_[index(id)]; }
 
     // Sets a value that was validated against its declaration. Returns false (and changes nothing) when
@@ -39,8 +53,10 @@ public:
 
 private:
     static std::size_t index(ParamId id) { return static_cast<std::size_t>(id); }
+    void store(std::size_t k, ParamValue value);
     std::array<ParamValue, param_count> values_;
     std::array<ParamSource, param_count> sources_{};
+    std::array<std::uint8_t, param_count> choices_{};  // an enum's value as its index, kept with values_
     std::uint64_t revision_ = 1;
 };
 

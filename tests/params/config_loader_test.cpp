@@ -75,13 +75,13 @@ TEST(ParseConfig, ValidFileApplies) {
     Params p;
     const auto before = p.revision();
     apply_config(c, p);
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), 20);
-    EXPECT_EQ(p.f(ParamId::rain_intensity), 1.5f);
-    EXPECT_EQ(p.f(ParamId::rain_speed), 2.0f);
-    EXPECT_EQ(p.v3(ParamId::water_tint), glm::vec3(0.1f, 0.2f, 0.3f));
-    EXPECT_FALSE(p.b(ParamId::ground_checkerboard));
-    EXPECT_EQ(p.s(ParamId::ground_image), "/srv/paving.png");
-    EXPECT_EQ(p.s(ParamId::render_method), "raymarch");
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 20);
+    EXPECT_EQ(p.get<ParamId::rain_intensity>(), 1.5f);
+    EXPECT_EQ(p.get<ParamId::rain_speed>(), 2.0f);
+    EXPECT_EQ(p.get<ParamId::water_tint>(), glm::vec3(0.1f, 0.2f, 0.3f));
+    EXPECT_FALSE(p.get<ParamId::ground_checkerboard>());
+    EXPECT_EQ(p.get<ParamId::ground_image>(), "/srv/paving.png");
+    EXPECT_EQ(p.get<ParamId::render_method>(), RenderMethod::raymarch);
     EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::Config);
     EXPECT_EQ(p.source(ParamId::wave_damping), ParamSource::Default);  // not in the file
     EXPECT_EQ(p.at(ParamId::wave_damping), decl(ParamId::wave_damping).default_value);
@@ -103,8 +103,8 @@ TEST(ParseConfig, ApplyDoesNotOverrideTheCommandLine) {
     Params p;
     ASSERT_TRUE(p.set(ParamId::rain_drop_count, 50, ParamSource::CommandLine));
     apply_config(*r, p);
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), 50);
-    EXPECT_EQ(p.f(ParamId::rain_speed), 3.0f);
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 50);
+    EXPECT_EQ(p.get<ParamId::rain_speed>(), 3.0f);
     // Applied as a preset (below the config), a later config wins.
     Params q;
     apply_config(*r, q, ParamSource::Preset);

@@ -28,13 +28,13 @@ TEST(ParamLayers, PrecedenceDefaultPresetConfigKnobCommandLine) {
         config("preset = \"downpour\"\n[rain]\nintensity = 0.6\nspeed = 3.0\n[look]\nfog_density = 0.05\n")));
     l.set_knob(ParamId::look_fog_density, 0.1f);
     const Params p = l.compose();
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), 100);
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 100);
     EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::Preset);
-    EXPECT_FLOAT_EQ(p.f(ParamId::rain_intensity), 0.6f);  // config over preset
+    EXPECT_FLOAT_EQ(p.get<ParamId::rain_intensity>(), 0.6f);  // config over preset
     EXPECT_EQ(p.source(ParamId::rain_intensity), ParamSource::Config);
-    EXPECT_FLOAT_EQ(p.f(ParamId::look_fog_density), 0.1f);  // knob over config
+    EXPECT_FLOAT_EQ(p.get<ParamId::look_fog_density>(), 0.1f);  // knob over config
     EXPECT_EQ(p.source(ParamId::look_fog_density), ParamSource::Knob);
-    EXPECT_FLOAT_EQ(p.f(ParamId::rain_speed), 7.0f);  // --set over everything
+    EXPECT_FLOAT_EQ(p.get<ParamId::rain_speed>(), 7.0f);  // --set over everything
     EXPECT_EQ(p.source(ParamId::rain_speed), ParamSource::CommandLine);
     EXPECT_EQ(p.source(ParamId::wave_resolution), ParamSource::Default);
 }
@@ -42,11 +42,11 @@ TEST(ParamLayers, PrecedenceDefaultPresetConfigKnobCommandLine) {
 TEST(ParamLayers, ARemovedConfigLineFallsBackToThePresetThenTheDefault) {
     ParamLayers l = layers();
     ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n[rain]\ndrop_count = 3\n")));
-    EXPECT_EQ(l.compose().i(ParamId::rain_drop_count), 3);
+    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 3);
     ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n")));
-    EXPECT_EQ(l.compose().i(ParamId::rain_drop_count), 100);
+    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 100);
     ASSERT_TRUE(l.set_config(config("")));
-    EXPECT_EQ(l.compose().i(ParamId::rain_drop_count), 16);
+    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 16);
 }
 
 TEST(ParamLayers, UnknownPresetIsRejectedWithFileLineAndTheChoices) {
@@ -57,7 +57,7 @@ TEST(ParamLayers, UnknownPresetIsRejectedWithFileLineAndTheChoices) {
     EXPECT_NE(r.error().message.find("test.toml:3"), std::string::npos) << r.error().message;
     EXPECT_NE(r.error().message.find("downpour"), std::string::npos)
         << "lists the presets: " << r.error().message;
-    EXPECT_EQ(l.compose().i(ParamId::rain_drop_count), 3) << "the last good config stays";
+    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 3) << "the last good config stays";
 }
 
 TEST(ParamLayers, KnobValuesAreClampedToTheRegisteredRange) {
@@ -65,8 +65,8 @@ TEST(ParamLayers, KnobValuesAreClampedToTheRegisteredRange) {
     l.set_knob(ParamId::rain_intensity, 99.0f);
     l.set_knob(ParamId::rain_drop_count, -5);
     const Params p = l.compose();
-    EXPECT_FLOAT_EQ(p.f(ParamId::rain_intensity), static_cast<float>(decl(ParamId::rain_intensity).max));
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), static_cast<int>(decl(ParamId::rain_drop_count).min));
+    EXPECT_FLOAT_EQ(p.get<ParamId::rain_intensity>(), static_cast<float>(decl(ParamId::rain_intensity).max));
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), static_cast<int>(decl(ParamId::rain_drop_count).min));
 }
 
 TEST(ParamLayers, AKnobPresetWinsOverTheConfigsAndClearingItGoesBack) {
@@ -74,7 +74,7 @@ TEST(ParamLayers, AKnobPresetWinsOverTheConfigsAndClearingItGoesBack) {
     ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n")));
     ASSERT_TRUE(l.select_preset("drizzle"));
     EXPECT_EQ(l.preset_name(), "drizzle");
-    EXPECT_EQ(l.compose().i(ParamId::rain_drop_count), 5);
+    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 5);
     ASSERT_TRUE(l.set_config(config("preset = \"mirror\"\n")));  // a reload keeps the knob's choice
     EXPECT_EQ(l.preset_name(), "drizzle");
     ASSERT_TRUE(l.select_preset(""));

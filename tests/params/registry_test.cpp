@@ -273,12 +273,12 @@ TEST(Validate, WrongKindIsRejected) {
 
 TEST(Params, StartsAtTheDefaults) {
     const Params p;
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), std::get<int>(decl(ParamId::rain_drop_count).default_value));
-    EXPECT_EQ(p.f(ParamId::rain_intensity), std::get<float>(decl(ParamId::rain_intensity).default_value));
-    EXPECT_EQ(p.b(ParamId::ground_checkerboard), std::get<bool>(decl(ParamId::ground_checkerboard).default_value));
-    EXPECT_EQ(p.v3(ParamId::water_tint), std::get<glm::vec3>(decl(ParamId::water_tint).default_value));
-    EXPECT_EQ(p.s(ParamId::render_method), "intersect");
-    EXPECT_EQ(p.s(ParamId::environment_image), "");
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), std::get<int>(decl(ParamId::rain_drop_count).default_value));
+    EXPECT_EQ(p.get<ParamId::rain_intensity>(), std::get<float>(decl(ParamId::rain_intensity).default_value));
+    EXPECT_EQ(p.get<ParamId::ground_checkerboard>(), std::get<bool>(decl(ParamId::ground_checkerboard).default_value));
+    EXPECT_EQ(p.get<ParamId::water_tint>(), std::get<glm::vec3>(decl(ParamId::water_tint).default_value));
+    EXPECT_EQ(p.get<ParamId::render_method>(), RenderMethod::intersect);
+    EXPECT_EQ(p.get<ParamId::environment_image>(), "");
     for (const ParamDecl& d : param_decls()) {
         EXPECT_EQ(p.at(d.id), d.default_value) << d.name;
         EXPECT_EQ(p.source(d.id), ParamSource::Default) << d.name;
@@ -290,7 +290,7 @@ TEST(Params, HigherSourceWinsAndRevisionCountsRealChanges) {
     const std::uint64_t r0 = p.revision();
 
     EXPECT_TRUE(p.set(ParamId::rain_drop_count, 20, ParamSource::Config));
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), 20);
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 20);
     EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::Config);
     const std::uint64_t r1 = p.revision();
     EXPECT_GT(r1, r0);
@@ -301,7 +301,7 @@ TEST(Params, HigherSourceWinsAndRevisionCountsRealChanges) {
 
     // A higher source overrides.
     EXPECT_TRUE(p.set(ParamId::rain_drop_count, 40, ParamSource::CommandLine));
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), 40);
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 40);
     EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::CommandLine);
     const std::uint64_t r2 = p.revision();
     EXPECT_GT(r2, r1);
@@ -310,13 +310,13 @@ TEST(Params, HigherSourceWinsAndRevisionCountsRealChanges) {
     EXPECT_FALSE(p.set(ParamId::rain_drop_count, 5, ParamSource::Config));
     EXPECT_FALSE(p.set(ParamId::rain_drop_count, 6, ParamSource::Knob));
     EXPECT_FALSE(p.set(ParamId::rain_drop_count, 7, ParamSource::Default));
-    EXPECT_EQ(p.i(ParamId::rain_drop_count), 40);
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 40);
     EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::CommandLine);
     EXPECT_EQ(p.revision(), r2);
 
     // Other parameters are independent: a config value still applies to them.
     EXPECT_TRUE(p.set(ParamId::rain_speed, 2.0f, ParamSource::Config));
-    EXPECT_EQ(p.f(ParamId::rain_speed), 2.0f);
+    EXPECT_EQ(p.get<ParamId::rain_speed>(), 2.0f);
     EXPECT_EQ(p.revision(), r2 + 1);
 
     // Setting the current value from a higher source raises the source without a revision change.
@@ -324,7 +324,7 @@ TEST(Params, HigherSourceWinsAndRevisionCountsRealChanges) {
     EXPECT_EQ(p.source(ParamId::rain_speed), ParamSource::Knob);
     EXPECT_EQ(p.revision(), r2 + 1);
     EXPECT_FALSE(p.set(ParamId::rain_speed, 3.0f, ParamSource::Preset));
-    EXPECT_EQ(p.f(ParamId::rain_speed), 2.0f);
+    EXPECT_EQ(p.get<ParamId::rain_speed>(), 2.0f);
 }
 
 TEST(Params, SourceNames) {

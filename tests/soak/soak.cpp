@@ -210,7 +210,7 @@ public:
             if (auto r = engine_.frame(p.dt); !r) return fmt::format("frame {}: {}", n, r.error().message);
             c_.frames = n + 1;
             if (reload) {
-                const int seed = engine_.params().i(params::ParamId::rain_seed);
+                const int seed = engine_.params().get<params::ParamId::rain_seed>();
                 if (seed != seed_for_reload(*reload))
                     return fmt::format(
                         "frame {}: config reload {} was not applied (rain.seed is {}, expected {})", n,

@@ -177,7 +177,7 @@ TEST(DropActivation, PhaseOffset) {
 TEST(DropSystem, LiveDropsAreTheActiveOnesInTexels) {
     Rain rain;
     ASSERT_TRUE(rain.params.set(ParamId::rain_drop_count, 40, ParamSource::CommandLine));
-    const float resolution = static_cast<float>(rain.params.i(ParamId::wave_resolution));
+    const float resolution = static_cast<float>(rain.params.get<ParamId::wave_resolution>());
     int max_live = 0;
     for (int i = 0; i < 600; ++i) {
         rain.step();
@@ -186,7 +186,7 @@ TEST(DropSystem, LiveDropsAreTheActiveOnesInTexels) {
         for (int k = 0; k < rain.live.count; ++k) {
             const glm::vec4 d = rain.live.drops[static_cast<std::size_t>(k)];
             ASSERT_GT(d.z, 0.01f) << "step " << i;
-            ASSERT_LE(d.z, rain.params.f(ParamId::rain_intensity));
+            ASSERT_LE(d.z, rain.params.get<ParamId::rain_intensity>());
             ASSERT_GE(d.x, 0.0f);
             ASSERT_LT(d.x, resolution);
             ASSERT_GE(d.y, 0.0f);
@@ -203,7 +203,7 @@ TEST(DropSystem, LiveDropsAreTheActiveOnesInTexels) {
 TEST(DropSystem, LiveDropMatchesItsEntity) {
     Rain rain;
     ASSERT_TRUE(rain.params.set(ParamId::rain_drop_count, 1, ParamSource::CommandLine));
-    const float resolution = static_cast<float>(rain.params.i(ParamId::wave_resolution));
+    const float resolution = static_cast<float>(rain.params.get<ParamId::wave_resolution>());
     int live_steps = 0;
     for (int i = 0; i < 120; ++i) {
         rain.step();

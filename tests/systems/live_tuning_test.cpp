@@ -50,11 +50,11 @@ TEST(LiveTuning, AnEditedConfigAppliesOnTheNextFrame) {
     Rig rig("[rain]\ndrop_count = 10\n");
     rig.step(1.0);
     const auto revision = rig.params.revision();
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     rig.write_config("[rain]\ndrop_count = 30\n[look]\nvignette = 1.0\n");
     rig.step(1.016);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 30);
-    EXPECT_FLOAT_EQ(rig.params.f(ParamId::look_vignette), 1.0f);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 30);
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::look_vignette>(), 1.0f);
     EXPECT_GT(rig.params.revision(), revision);
 }
 
@@ -63,13 +63,13 @@ TEST(LiveTuning, AnInvalidFileKeepsTheLastGoodConfigAndTheNextValidSaveApplies) 
     rig.step(1.0);
     rig.write_config("[rain]\ndrop_count = 10\nintensity = 99\n");  // out of range: nothing applies
     rig.step(1.1);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     rig.write_config("[rain\ngarbage");
     rig.step(1.2);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     rig.write_config("[rain]\ndrop_count = 12\n");
     rig.step(1.3);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 12);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 12);
 }
 
 // Issue 15, fault 2: a live edit to a 50 000-level dotted key killed the running display (SIGSEGV).
@@ -80,13 +80,13 @@ TEST(LiveTuning, AConfigPastTheInputLimitsKeepsTheLastGoodConfig) {
     for (int i = 0; i < 50000; ++i) deep += ".a";
     rig.write_config("[rain]\ndrop_count = 30\n" + deep + " = 1\n");
     rig.step(1.1);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     rig.write_config("[" + deep + "]\n");
     rig.step(1.2);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     rig.write_config("[rain]\ndrop_count = 12\n");
     rig.step(1.3);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 12);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 12);
 }
 
 TEST(LiveTuning, DeletedConfigKeepsRunningAndARecreatedOneApplies) {
@@ -94,10 +94,10 @@ TEST(LiveTuning, DeletedConfigKeepsRunningAndARecreatedOneApplies) {
     rig.step(1.0);
     std::filesystem::remove(rig.config_path);
     rig.step(1.1);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     std::ofstream(rig.config_path) << "[rain]\ndrop_count = 20\n";
     rig.step(1.2);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 20);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 20);
 }
 
 TEST(LiveTuning, SighupReloads) {
@@ -105,10 +105,10 @@ TEST(LiveTuning, SighupReloads) {
     rig.tuning->watcher.reset();  // as if inotify were unavailable
     std::ofstream(rig.config_path) << "[rain]\ndrop_count = 11\n";
     rig.step(1.0);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 10);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
     rig.tuning->reload_requested = true;
     rig.step(1.1);
-    EXPECT_EQ(rig.params.i(ParamId::rain_drop_count), 11);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 11);
 }
 
 TEST(LiveTuning, AnUnchangedReloadDoesNotBumpTheRevision) {
@@ -153,7 +153,7 @@ TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
     rig.step(1.0);  // opens the lines
     turn(*rig.gpio, 1.1, 2);
     rig.step(2.5);
-    EXPECT_NEAR(rig.params.f(ParamId::rain_intensity), 0.7f, 1e-5);
+    EXPECT_NEAR(rig.params.get<ParamId::rain_intensity>(), 0.7f, 1e-5);
     EXPECT_EQ(rig.params.source(ParamId::rain_intensity), ParamSource::Knob);
     EXPECT_FALSE(std::filesystem::exists(rig.dir / "state.toml")) << "saved a few seconds after the last change";
     rig.step(2.5 + LiveTuning::save_delay_seconds);
@@ -167,7 +167,7 @@ TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
         turn(*rig.gpio, 10.0 + 20.0 * i, 20);
         rig.step(20.0 + 20.0 * i);
     }
-    EXPECT_FLOAT_EQ(rig.params.f(ParamId::rain_intensity), 4.0f);
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 4.0f);
 }
 
 // The log lines at warning level and above while it lives.
@@ -230,13 +230,13 @@ TEST(LiveTuning, AConfigReloadDoesNotUndoAKnob) {
     rig.step(1.0);
     turn(*rig.gpio, 1.1, 1);
     rig.step(2.0);
-    EXPECT_NEAR(rig.params.f(ParamId::rain_intensity), 0.6f, 1e-5);
+    EXPECT_NEAR(rig.params.get<ParamId::rain_intensity>(), 0.6f, 1e-5);
     std::string text = knob_config;
     text.replace(text.find("0.5"), 3, "0.2");
     rig.write_config(text + "\n[look]\nvignette = 0.9\n");
     rig.step(2.1);
-    EXPECT_NEAR(rig.params.f(ParamId::rain_intensity), 0.6f, 1e-5) << "knob state is above the config";
-    EXPECT_FLOAT_EQ(rig.params.f(ParamId::look_vignette), 0.9f);
+    EXPECT_NEAR(rig.params.get<ParamId::rain_intensity>(), 0.6f, 1e-5) << "knob state is above the config";
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::look_vignette>(), 0.9f);
 }
 
 TEST(LiveTuning, AButtonStepsThroughThePresets) {

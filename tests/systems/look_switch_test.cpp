@@ -74,12 +74,12 @@ TEST(LookSwitch, ANewSceneIsBuiltOffTheFrameThreadAndShownWhenReady) {
     // The worker is held: frames go on, showing the puddle. With the compile on the frame thread the first
     // of these frames would have waited for it and shown the ocean.
     const auto while_building = render_frames(*engine, 3);
-    EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::Puddle);
+    EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::puddle);
     EXPECT_LT(compare_images(before, while_building, 32).fraction_over, 0.2) << "still the puddle";
 
     gate.open();
-    const int more = frames_until_shown(*engine, systems::Scene::Ocean);
-    ASSERT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::Ocean);
+    const int more = frames_until_shown(*engine, systems::Scene::ocean);
+    ASSERT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::ocean);
     const auto ocean = render_frames(*engine, 1);  // frame 5 + 3 + more + 1
     // The ocean is a function of time: an engine started with it, at the same frame, draws the same.
     const auto ocean_fresh = render_with({"scene.kind=ocean"}, 5 + 3 + more + 1);
@@ -98,7 +98,7 @@ TEST(LookSwitch, ALookThatFailsToBuildIsNeverShown) {
     const auto before = render_frames(*engine, 3);
     set(*engine, "scene.kind=ocean");
     const auto after = render_frames(*engine, 10);
-    EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::Puddle);
+    EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::puddle);
     EXPECT_LT(compare_images(before, after, 32).fraction_over, 0.2) << "the puddle stays, not a black frame";
 }
 

@@ -21,7 +21,8 @@ TEST(PuddleVariants, EveryVariantCompiles) {
         for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(systems::tonemap_count); ++t) {
-                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm, .tonemap = t};
+                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm,
+                                          .tonemap = static_cast<params::Tonemap>(t)};
                     EXPECT_NE(renderer.pipeline(device, v), nullptr) << systems::describe(v);
                 }
 }

@@ -33,15 +33,15 @@ TEST(PuddleVariant, DefaultsSelectTheCheapPath) {
     EXPECT_FALSE(v.raymarch);
     EXPECT_EQ(v.ground, GroundKind::Checkerboard);
     EXPECT_FALSE(v.env_rgbm);
-    EXPECT_EQ(v.tonemap, 1);  // "soft", the second of clip|soft|reinhard|aces
+    EXPECT_EQ(v.tonemap, params::Tonemap::soft);
 }
 
 TEST(PuddleVariant, EachParameterPicksItsVariant) {
     EXPECT_TRUE(choose_puddle_variant(with({"render.method=raymarch"}), false).raymarch);
     EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=false"}), false).ground, GroundKind::Image);
     EXPECT_TRUE(choose_puddle_variant(with({}), true).env_rgbm);
-    EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=aces"}), false).tonemap, 3);
-    EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=clip"}), false).tonemap, 0);
+    EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=aces"}), false).tonemap, params::Tonemap::aces);
+    EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=clip"}), false).tonemap, params::Tonemap::clip);
 }
 
 // The ground is hidden when even the shortest path through the water (from the lowest trough straight
@@ -67,7 +67,8 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
         for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
-                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm, .tonemap = t};
+                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm,
+                                          .tonemap = static_cast<params::Tonemap>(t)};
                     const std::size_t i = variant_index(v);
                     EXPECT_LT(i, puddle_variant_count);
                     slots.insert(i);
@@ -86,7 +87,7 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
 }
 
 TEST(PuddleVariant, DescribeNamesTheChoices) {
-    EXPECT_EQ(describe({.raymarch = true, .ground = GroundKind::Image, .env_rgbm = true, .tonemap = 2}),
+    EXPECT_EQ(describe({.raymarch = true, .ground = GroundKind::Image, .env_rgbm = true, .tonemap = params::Tonemap::reinhard}),
               "raymarch, ground image, RGBM sky, reinhard tone curve");
     EXPECT_EQ(describe({}), "intersect, checkerboard, clip tone curve");
 }
