@@ -12,23 +12,12 @@
 #include <thread>
 
 #include "platform/display.hpp"
+#include "support/gpu_fixture.hpp"
 
 namespace puddle::gpu {
 namespace {
 
-class DeviceTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        auto d =
-            platform::create_headless_display({.backend = platform::BackendKind::Headless, .size = {64, 32}});
-        ASSERT_TRUE(d.ok()) << d.error().message;
-        display_ = std::move(d).value();
-        device_ = std::make_unique<Device>();
-    }
-    void TearDown() override { device_.reset(); }  // GPU objects before the context
-    std::unique_ptr<platform::Display> display_;
-    std::unique_ptr<Device> device_;
-};
+class DeviceTest : public test::DeviceFixture {};
 
 TEST_F(DeviceTest, ProbesCapabilities) {
     const Capabilities& c = device_->caps();
@@ -204,22 +193,6 @@ TEST_F(DeviceTest, ABufferThatDoesNotFitIsAnOutOfMemoryError) {
     EXPECT_EQ(b.error().code, ExitCode::GpuMemory);
     EXPECT_EQ(b.error().message, "gpu: buffer 'huge' (1099511627776 bytes): glBufferData: GL_OUT_OF_MEMORY");
     EXPECT_TRUE(device_->create_buffer({.label = "small", .size = 64}).ok());
-}
-
-TEST_F(DeviceTest, DescribesStorageInBytesOfEveryLevelAndFace) {
-    const TextureDesc cube{.kind = TextureKind::Cube,
-                           .format = TextureFormat::RGBA16F,
-                           .width = 4,
-                           .height = 4,
-                           .mip_levels = 3};
-    EXPECT_EQ(storage_bytes(cube), 6u * 8u * (16 + 4 + 1));
-    EXPECT_EQ(describe_storage(cube), "cube 6 x 4x4 RGBA16F, 3 levels, 1008 bytes");
-    const TextureDesc sky{.kind = TextureKind::Cube,
-                          .format = TextureFormat::SRGB8_A8,
-                          .width = 4096,
-                          .height = 4096,
-                          .mip_levels = 13};
-    EXPECT_EQ(describe_storage(sky), "cube 6 x 4096x4096 SRGB8_ALPHA8, 13 levels, 512.0 MiB");
 }
 
 TEST_F(DeviceTest, TakeErrorsNamesARaisedGlErrorOnceThenIsEmpty) {
