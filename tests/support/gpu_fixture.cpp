@@ -8,12 +8,16 @@ namespace puddle::test {
 
 params::Params make_params(std::initializer_list<std::string> sets) {
     params::Params p;
+    apply_sets(p, sets);
+    return p;
+}
+
+void apply_sets(params::Params& params, const std::vector<std::string>& sets) {
     for (const std::string& s : sets) {
         auto e = params::parse_assignment(s);
-        EXPECT_TRUE(e.ok()) << (e.ok() ? "" : e.error().message);
-        if (e) p.set(e->id, e->value, params::ParamSource::CommandLine);
+        EXPECT_TRUE(e.ok()) << s << ": " << (e.ok() ? "" : e.error().message);
+        if (e) params.set(e->id, e->value, params::ParamSource::CommandLine);
     }
-    return p;
 }
 
 std::unique_ptr<app::Engine> make_engine(const params::Params& params, glm::ivec2 size,

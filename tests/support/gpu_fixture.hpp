@@ -30,6 +30,8 @@ namespace puddle::test {
 
 // Parameters from "name=value" strings, as --set takes them; a bad one fails the test.
 params::Params make_params(std::initializer_list<std::string> sets);
+// Sets "name=value" strings on `params` (command-line layer); a bad one fails the test with its error.
+void apply_sets(params::Params& params, const std::vector<std::string>& sets);
 
 // A headless engine of the given size; fails the test (and returns null) when EGL cannot start.
 std::unique_ptr<app::Engine> make_engine(const params::Params& params, glm::ivec2 size = {192, 108},

@@ -20,14 +20,8 @@ const std::initializer_list<std::string> kSkyOnly{"camera.position=0,100,0", "ca
 
 assets::Image render_sky(const std::string& env, std::initializer_list<std::string> more = {}) {
     params::Params p = make_params(kSkyOnly);
-    for (const std::string& s : more) {
-        auto e = params::parse_assignment(s);
-        EXPECT_TRUE(e.ok()) << s;
-        if (e) p.set(e->id, e->value, params::ParamSource::CommandLine);
-    }
-    auto e = params::parse_assignment("environment.image=" + env);
-    EXPECT_TRUE(e.ok());
-    p.set(e->id, e->value, params::ParamSource::CommandLine);
+    apply_sets(p, more);
+    apply_sets(p, {"environment.image=" + env});
     auto engine = make_engine(p, {64, 36});
     if (!engine) return {};
     return render_frames(*engine, 2);
@@ -77,11 +71,8 @@ TEST(Colour, ExposureDoublesAndHalvesRadianceBeforeToneMapping) {
     for (bool fallback : {false, true}) {
         auto radiance = [&](const char* stops) {
             params::Params p = make_params(kSkyOnly);
-            for (std::string s : {"environment.image=" + sky, std::string("environment.exposure=") + stops,
-                                  std::string("look.tonemap=clip")}) {
-                auto e = params::parse_assignment(s);
-                p.set(e->id, e->value, params::ParamSource::CommandLine);
-            }
+            apply_sets(p, {"environment.image=" + sky, std::string("environment.exposure=") + stops,
+                           "look.tonemap=clip"});
             auto engine = make_engine(p, {64, 36}, {.forbid_float_targets = fallback});
             return engine ? srgb_to_linear(render_frames(*engine, 2).pixel8(32, 18)[1]) : 0.0f;
         };
@@ -102,10 +93,7 @@ TEST(Colour, HdrCrossIsLinearInHalfFloatAndInForcedRgbm) {
     write_float_image(cross, img);
     for (bool fallback : {false, true}) {
         params::Params p = make_params(kSkyOnly);
-        for (std::string s : {"environment.image=" + cross, std::string("look.tonemap=clip")}) {
-            auto e = params::parse_assignment(s);
-            p.set(e->id, e->value, params::ParamSource::CommandLine);
-        }
+        apply_sets(p, {"environment.image=" + cross, "look.tonemap=clip"});
         auto engine = make_engine(p, {64, 36}, {.forbid_float_targets = fallback});
         ASSERT_TRUE(engine);
         EXPECT_EQ(engine->world().resource<systems::Environment>().rgbm, fallback);

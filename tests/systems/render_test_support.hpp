@@ -15,11 +15,7 @@ inline constexpr glm::ivec2 render_test_size{160, 90};
 inline assets::Image render_with(std::initializer_list<std::string> sets, int frames = 45,
                                  glm::ivec2 size = render_test_size) {
     params::Params p = make_params({"wave.resolution=256", "rain.seed=11"});
-    for (const std::string& s : sets) {
-        auto e = params::parse_assignment(s);
-        EXPECT_TRUE(e.ok()) << s;
-        if (e) p.set(e->id, e->value, params::ParamSource::CommandLine);
-    }
+    apply_sets(p, sets);
     auto engine = make_engine(p, size);
     if (!engine) return {};
     return render_frames(*engine, frames);

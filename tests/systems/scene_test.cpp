@@ -59,14 +59,57 @@ TEST(OceanScene, WavesMoveWithTime) {
     EXPECT_EQ(compare_images(slow_early, slow_later, 0).max_channel_diff, 0) << "speed 0 stops the sea";
 }
 
+// Mean over rows [y0, y1) of each row's luma standard deviation: the sky is smooth along a row, the
+// ground (puddles) and the sea (waves) are not.
+double row_contrast(const assets::Image& img, int y0, int y1) {
+    double sum = 0;
+    for (int y = y0; y < y1; ++y) sum += luma_stddev(img, 0, y, img.width, y + 1);
+    return sum / (y1 - y0);
+}
+
+// The first row from the top whose contrast along it passes `threshold`: where the smooth sky ends.
+int first_rough_row(const assets::Image& img, double threshold) {
+    for (int y = 0; y < img.height; ++y)
+        if (luma_stddev(img, 0, y, img.width, y + 1) > threshold) return y;
+    return img.height;
+}
+
+// street.horizon is the horizon's height above the bottom of the screen: above it a smooth sky, below it
+// the ground's puddles. Fails if the horizon ignored the parameter or were measured from the top.
 TEST(StreetScene, HorizonSplitsSkyFromGround) {
-    // The sky holds no puddles: with the horizon high, the band just below it becomes ground and changes.
-    const auto low = render_with({"scene.kind=street", "street.horizon=0.3"}, 2);
-    const auto high = render_with({"scene.kind=street", "street.horizon=0.7"}, 2);
-    const int band_top = 90 - static_cast<int>(0.65 * 90), band_bottom = 90 - static_cast<int>(0.35 * 90);
-    EXPECT_GT(compare_images(low, high, 8).fraction_over, 0.1);
-    EXPECT_GT(luma_stddev(high, 0, band_top, 160, band_bottom), 0.0);
-    EXPECT_NE(mean_luma(low, 0, band_top, 160, band_bottom), mean_luma(high, 0, band_top, 160, band_bottom));
+    for (const float horizon : {0.3f, 0.7f}) {
+        SCOPED_TRACE(horizon);
+        const auto img = render_with({"scene.kind=street", "street.horizon=" + std::to_string(horizon)}, 2);
+        ASSERT_EQ(img.height, render_test_size.y);
+        const int row = static_cast<int>(std::lround(img.height * (1.0 - horizon)));  // from the top
+        const double sky = row_contrast(img, 0, row - 4), ground = row_contrast(img, row + 4, img.height);
+        EXPECT_GT(ground, 2.5 * sky) << "ground " << ground << ", sky " << sky;
+        // Fog thins the ground's contrast just below the horizon, so the puddles show a few rows lower.
+        const int rough = first_rough_row(img, 8.0);
+        EXPECT_GE(rough, row - 2);
+        EXPECT_LE(rough, row + 6);
+    }
+}
+
+// Looking out to sea from (0, 4, 5) toward (0, target_y, -10): the horizon (elevation 0) shows at
+// tan(pitch) / tan(fov / 2) of the half height below the centre when the camera looks up, above it when
+// down (a pinhole camera without roll). Above it the sky is smooth and brighter than the sea.
+TEST(OceanScene, TheHorizonIsWhereTheCameraPutsIt) {
+    const double tan_half_fov = std::tan(60.0 / 2 * 3.14159265358979 / 180);  // camera.fov's default
+    for (const int target_y : {2, 4, 6}) {
+        SCOPED_TRACE(target_y);
+        const auto img = render_with({"scene.kind=ocean", "ocean.camera_position=0,4,5",
+                                      "ocean.camera_target=0," + std::to_string(target_y) + ",-10"},
+                                     2);
+        ASSERT_EQ(img.height, render_test_size.y);
+        const double tan_pitch = (target_y - 4) / 15.0;
+        const double horizon = img.height / 2.0 * (1 + tan_pitch / tan_half_fov);  // rows from the top
+        EXPECT_NEAR(first_rough_row(img, 10.0), horizon, 1.5);
+        const int h = static_cast<int>(horizon);
+        EXPECT_GT(mean_luma(img, 0, 0, img.width, h - 2),
+                  mean_luma(img, 0, h + 2, img.width, img.height) + 60);
+        EXPECT_LT(row_contrast(img, 0, h - 2), 3.0) << "the sky is smooth";
+    }
 }
 
 TEST(StreetScene, RipplesBrightenThePuddles) {
@@ -83,10 +126,7 @@ double streak_fraction(std::initializer_list<std::string> overlay_sets) {
     std::vector<std::string> sets{"scene.kind=street", "overlay.rain=true"};
     sets.insert(sets.end(), overlay_sets);
     params::Params p = make_params({"wave.resolution=256", "rain.seed=11"});
-    for (const std::string& s : sets) {
-        auto e = params::parse_assignment(s);
-        if (e) p.set(e->id, e->value, params::ParamSource::CommandLine);
-    }
+    apply_sets(p, sets);
     auto engine = make_engine(p, render_test_size);
     if (!engine) return -1;
     return compare_images(plain, render_frames(*engine, 10), 8).fraction_over;

@@ -53,11 +53,7 @@ const Look grid{
 
 std::unique_ptr<app::Engine> engine_for(const Look& look) {
     params::Params p = make_params({"wave.resolution=256", "rain.seed=11"});
-    for (const std::string& s : look.sets) {
-        auto e = params::parse_assignment(s);
-        EXPECT_TRUE(e.ok()) << s;
-        if (e) p.set(e->id, e->value, params::ParamSource::CommandLine);
-    }
+    apply_sets(p, look.sets);
     return make_engine(p, render_test_size);
 }
 
