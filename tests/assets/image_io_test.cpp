@@ -181,15 +181,6 @@ TEST_F(ImageIoTest, ProbeOfAColorImageSaysFloatForHdrAndAppliesTheLimits) {
     EXPECT_EQ(probe_image(path("sky.hdr"))->format, PixelFormat::RGBA8) << "read_image's default converts";
 }
 
-TEST(ImageLimits, TheLimitsThemselvesAreAllowed) {
-    EXPECT_TRUE(
-        check_image_size("a", max_image_side, max_image_side, PixelFormat::RGBA8).ok());  // exactly 1 GiB
-    EXPECT_TRUE(check_image_size("a", 8192, 8192, PixelFormat::RGBA32F).ok());            // exactly 1 GiB
-    EXPECT_FALSE(check_image_size("a", 8193, 8192, PixelFormat::RGBA32F).ok());
-    EXPECT_FALSE(check_image_size("a", 1, max_image_side + 1, PixelFormat::RGBA8).ok());
-    EXPECT_FALSE(check_image_size("a", 0, 1, PixelFormat::RGBA8).ok());
-}
-
 // A FIFO in a mock camera folder, or named as the sky, once hung start-up inside the decoder's open().
 TEST_F(ImageIoTest, AFifoIsRefusedWithoutWaitingForAWriter) {
     const std::string fifo = path("sky.png");

@@ -6,6 +6,7 @@
 
 #include "params/config_loader.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
 
 namespace puddle::test {
 
@@ -19,6 +20,21 @@ inline assets::Image render_with(std::initializer_list<std::string> sets, int fr
     auto engine = make_engine(p, size);
     if (!engine) return {};
     return render_frames(*engine, frames);
+}
+
+// Mean over rows [y0, y1) of each row's luma standard deviation: the sky is smooth along a row, the
+// ground (puddles) and the sea (waves) are not.
+inline double row_contrast(const assets::Image& img, int y0, int y1) {
+    double sum = 0;
+    for (int y = y0; y < y1; ++y) sum += luma_stddev(img, 0, y, img.width, y + 1);
+    return sum / (y1 - y0);
+}
+
+// The first row from the top whose contrast along it passes `threshold`: where the smooth sky ends.
+inline int first_rough_row(const assets::Image& img, double threshold) {
+    for (int y = 0; y < img.height; ++y)
+        if (luma_stddev(img, 0, y, img.width, y + 1) > threshold) return y;
+    return img.height;
 }
 
 }  // namespace puddle::test

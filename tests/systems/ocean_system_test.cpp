@@ -1,0 +1,77 @@
+// The ocean scene (systems/ocean_system.hpp, REFERENCE.md section 2): each parameter moves the sea the
+// way its name says, and the camera puts the horizon where a pinhole camera would.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "support/test_support.hpp"
+#include "systems/render_test_support.hpp"
+
+namespace puddle::test {
+namespace {
+
+// Mean |luma difference| between horizontal and vertical neighbours: how busy (rough) the picture is.
+double roughness(const assets::Image& img) {
+    auto luma = [&](int x, int y) {
+        const std::uint8_t* p = &img.data[(static_cast<std::size_t>(y) * img.width + x) * 4];
+        return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+    };
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y + 1 < img.height; ++y)
+        for (int x = 0; x + 1 < img.width; ++x, ++n)
+            sum += std::abs(luma(x + 1, y) - luma(x, y)) + std::abs(luma(x, y + 1) - luma(x, y));
+    return sum / n;
+}
+
+TEST(OceanScene, MoreChoppinessGivesRougherWater) {
+    const auto smooth = render_with({"scene.kind=ocean", "ocean.choppiness=1"}, 2);
+    const auto choppy = render_with({"scene.kind=ocean", "ocean.choppiness=8"}, 2);
+    EXPECT_GT(roughness(choppy), 1.3 * roughness(smooth)) << roughness(choppy) << " vs " << roughness(smooth);
+}
+
+TEST(OceanScene, SeaColourColoursTheWater) {
+    const auto green = render_with({"scene.kind=ocean", "ocean.sea_color=0.05,0.4,0.05"}, 2);
+    const auto red = render_with({"scene.kind=ocean", "ocean.sea_color=0.4,0.05,0.05"}, 2);
+    auto mean = [](const assets::Image& img, int c) {
+        double s = 0;
+        for (std::size_t i = static_cast<std::size_t>(c); i < img.data.size(); i += 4) s += img.data[i];
+        return s / (static_cast<double>(img.data.size()) / 4);
+    };
+    EXPECT_GT(mean(green, 1) - mean(red, 1), 20);
+    EXPECT_GT(mean(red, 0) - mean(green, 0), 20);
+}
+
+TEST(OceanScene, WavesMoveWithTime) {
+    const auto early = render_with({"scene.kind=ocean"}, 2);
+    const auto later = render_with({"scene.kind=ocean"}, 30);
+    const auto slow_later = render_with({"scene.kind=ocean", "ocean.speed=0"}, 30);
+    const auto slow_early = render_with({"scene.kind=ocean", "ocean.speed=0"}, 2);
+    EXPECT_GT(compare_images(early, later, 8).fraction_over, 0.05);
+    EXPECT_EQ(compare_images(slow_early, slow_later, 0).max_channel_diff, 0) << "speed 0 stops the sea";
+}
+
+// Looking out to sea from (0, 4, 5) toward (0, target_y, -10): the horizon (elevation 0) shows at
+// tan(pitch) / tan(fov / 2) of the half height below the centre when the camera looks up, above it when
+// down (a pinhole camera without roll). Above it the sky is smooth and brighter than the sea.
+TEST(OceanScene, TheHorizonIsWhereTheCameraPutsIt) {
+    const double tan_half_fov = std::tan(60.0 / 2 * 3.14159265358979 / 180);  // camera.fov's default
+    for (const int target_y : {2, 4, 6}) {
+        SCOPED_TRACE(target_y);
+        const auto img = render_with({"scene.kind=ocean", "ocean.camera_position=0,4,5",
+                                      "ocean.camera_target=0," + std::to_string(target_y) + ",-10"},
+                                     2);
+        ASSERT_EQ(img.height, render_test_size.y);
+        const double tan_pitch = (target_y - 4) / 15.0;
+        const double horizon = img.height / 2.0 * (1 + tan_pitch / tan_half_fov);  // rows from the top
+        EXPECT_NEAR(first_rough_row(img, 10.0), horizon, 1.5);
+        const int h = static_cast<int>(horizon);
+        EXPECT_GT(mean_luma(img, 0, 0, img.width, h - 2),
+                  mean_luma(img, 0, h + 2, img.width, img.height) + 60);
+        EXPECT_LT(row_contrast(img, 0, h - 2), 3.0) << "the sky is smooth";
+    }
+}
+
+}  // namespace
+}  // namespace puddle::test
