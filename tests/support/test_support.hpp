@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the tests: temporary folders, image statistics and comparisons, the shared assets.
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -21,6 +22,15 @@ public:
 
 private:
     std::filesystem::path path_;
+};
+
+// Sets an environment variable for its lifetime, then unsets it.
+struct ScopedEnv {
+    ScopedEnv(const char* name, const std::string& value) : name_(name) { ::setenv(name, value.c_str(), 1); }
+    ~ScopedEnv() { ::unsetenv(name_); }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+    const char* name_;
 };
 
 // A file's bytes, empty when it cannot be read.
