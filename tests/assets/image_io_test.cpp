@@ -235,21 +235,5 @@ TEST_F(ImageIoTest, FolderIsNotAnImage) {
     EXPECT_EQ(img.error().message, "image: " + dir_.string() + ": cannot open: is a directory");
 }
 
-TEST_F(ImageIoTest, WriteIntoMissingFolderFailsAndLeavesNothing) {
-    const std::string target = path("missing/out.png");
-    auto written = write_png(target, pattern(2, 2));
-    ASSERT_FALSE(written.ok());
-    EXPECT_EQ(written.error().code, ExitCode::Asset);
-    EXPECT_EQ(written.error().message.rfind("image: " + target + ": cannot write: ", 0), 0u)
-        << written.error().message;
-    EXPECT_FALSE(fs::exists(target));
-}
-
-TEST_F(ImageIoTest, WriteRejectsFloatAndEmptyImages) {
-    EXPECT_FALSE(write_png(path("f.png"), Image::make(2, 2, PixelFormat::RGBA32F)).ok());
-    EXPECT_FALSE(write_png(path("e.png"), Image{}).ok());
-    EXPECT_FALSE(fs::exists(path("f.png")));
-}
-
 }  // namespace
 }  // namespace puddle::assets
