@@ -209,7 +209,8 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
         const camera::YuvToRgb m = camera::yuv_to_rgb(env.pending.matrix, env.pending.full_range);
         auto pass = device.begin_pass(
             {.label = "camera convert",
-             .target = {.texture = &env.colour, .size = {env.colour.width(), env.colour.height()}}});
+             .target = {.texture = &env.colour, .size = {env.colour.width(), env.colour.height()}},
+             .load = gpu::LoadOp::DontCare});  // the conversion writes every texel
         if (env.pending_import) {
             pass.set_pipeline(env.convert_external)
                 .set_texture(0, env.pending_import->texture(), env.linear)
@@ -244,7 +245,8 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
     for (int face = 0; face < 6; ++face) {
         auto pass = device.begin_pass(
             {.label = "camera cube face",
-             .target = {.texture = &env.cube, .size = {camera_cube_size, camera_cube_size}, .face = face}});
+             .target = {.texture = &env.cube, .size = {camera_cube_size, camera_cube_size}, .face = face},
+             .load = gpu::LoadOp::DontCare});  // each face is drawn whole
         pass.set_pipeline(ball ? env.cube_mirror_ball : env.cube_planar)
             .set_texture(0, sky.cube, sky.sampler)
             .set_texture(1, env.colour, env.linear)

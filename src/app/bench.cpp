@@ -145,7 +145,7 @@ void bench_floor(benchmark::State& state, glm::ivec2 size) {
     gpu::Device& device = b->engine->device();
     const gpu::FrameTarget target = b->engine->display().frame_target();
     measure(state, device, [&] {
-        auto pass = device.begin_pass({.label = "floor", .target = target});
+        auto pass = device.begin_pass({.label = "floor", .target = target, .load = gpu::LoadOp::DontCare});
         pass.set_pipeline(b->floor).set_texture(0, b->source, b->sampler);
         pass.draw_fullscreen();
     });

@@ -22,14 +22,14 @@ RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
     glDisable(GL_DEPTH_TEST);
     scissored_ = desc.rows.y > 0;
     if (scissored_) {
-        assert(desc.load != LoadOp::DontCare && "the rows outside the band keep their contents");
+        assert(desc.load.op != LoadOp::DontCare && "the rows outside the band keep their contents");
         glEnable(GL_SCISSOR_TEST);
         glScissor(0, desc.rows.x, desc.target.size.x, desc.rows.y);
     }
-    if (desc.load == LoadOp::Clear) {
+    if (desc.load.op == LoadOp::Clear) {
         glClearColor(desc.clear.r, desc.clear.g, desc.clear.b, desc.clear.a);
         glClear(GL_COLOR_BUFFER_BIT);
-    } else if (desc.load == LoadOp::DontCare) {
+    } else if (desc.load.op == LoadOp::DontCare) {
         // Tell a tiler it need not load the old contents: the pass overwrites every pixel.
         const GLenum attachment = is_default_framebuffer_ ? GL_COLOR : GL_COLOR_ATTACHMENT0;
         glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);

@@ -24,13 +24,20 @@ class Pipeline;
 class Sampler;
 class Texture;
 
+// What a pass does with the target's old contents. As in WebGPU there is no default: every pass says
+// which, so a forgotten clear cannot show the last frame's leftovers.
 enum class LoadOp { Clear, Load, DontCare };
+// A LoadOp that must be given: a RenderPassDesc without `.load = ...` does not compile.
+struct RequiredLoadOp {
+    constexpr RequiredLoadOp(LoadOp o) : op(o) {}  // implicit: `.load = LoadOp::Clear` reads as it should
+    LoadOp op;
+};
 enum class StoreOp { Store, Discard };
 
 struct RenderPassDesc {
     std::string_view label;
     FrameTarget target;  // texture, or framebuffer 0 of the current surface
-    LoadOp load = LoadOp::DontCare;
+    RequiredLoadOp load;
     glm::vec4 clear{0, 0, 0, 1};
     StoreOp store = StoreOp::Store;
     // Only rows [first, first + count) of the target are drawn (glScissor; row 0 is GL's bottom row, t = 0),
