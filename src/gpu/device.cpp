@@ -200,7 +200,8 @@ std::vector<float> Device::read_texture(const Texture& texture, int face) {
         std::vector<GLint> ints(out.size());
         glReadPixels(0, 0, w, h, GL_RGBA_INTEGER, GL_INT, ints.data());
         std::transform(ints.begin(), ints.end(), out.begin(), [](GLint v) { return static_cast<float>(v); });
-    } else if (f == TextureFormat::RGBA8 || f == TextureFormat::SRGB8_A8) {
+    } else if (f == TextureFormat::RGBA8 || f == TextureFormat::SRGB8_A8 || f == TextureFormat::R8 ||
+               f == TextureFormat::RG8) {  // normalized: GL reads them only as bytes (ES 3.0 §4.3.2)
         std::vector<std::uint8_t> bytes(out.size());
         glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
         std::transform(bytes.begin(), bytes.end(), out.begin(), [](std::uint8_t v) { return v / 255.0f; });

@@ -120,9 +120,8 @@ std::vector<std::byte> bytes_of(const std::vector<glm::u8vec4>& texels) {
     return {b.begin(), b.end()};
 }
 
-// R8 and RG8 (a camera's Y and UV planes) are not read back by read_texture, which asks glReadPixels for
-// floats (GL_INVALID_OPERATION for normalised formats): they are drawn into an RGBA8 target instead, one
-// pixel per texel, as the camera shader samples them. Missing channels sample as 0, 0, 1.
+// R8 and RG8 (a camera's Y and UV planes) drawn into an RGBA8 target, one pixel per texel, as the camera
+// shader samples them. Missing channels sample as 0, 0, 1.
 TEST_F(TextureTest, OneAndTwoChannelByteFormatsSampleAsUploaded) {
     const Pipeline copy = test::make_copy_pipeline(*device_, Blend::Replace);
     for (const TextureFormat format : {TextureFormat::R8, TextureFormat::RG8}) {
@@ -139,6 +138,27 @@ TEST_F(TextureTest, OneAndTwoChannelByteFormatsSampleAsUploaded) {
             const glm::u8vec4 got = drawn[std::size_t((1 - i / 2) * 2 + i % 2)];
             const std::size_t at = std::size_t(i * channels);
             EXPECT_EQ(got, glm::u8vec4(bytes[at], channels > 1 ? bytes[at + 1] : 0, 0, 255)) << "texel " << i;
+        }
+    }
+}
+
+// read_texture reads normalised one- and two-channel textures as bytes / 255 (glReadPixels refuses
+// GL_FLOAT for them); the channels they lack read as 0, and alpha as 1.
+TEST_F(TextureTest, ReadTextureGivesOneAndTwoChannelBytesOverTwoFiftyFive) {
+    for (const TextureFormat format : {TextureFormat::R8, TextureFormat::RG8}) {
+        SCOPED_TRACE(format_name(format));
+        const int channels = gl_format(format).channels;
+        Texture t = make({.label = "plane", .format = format, .width = 2, .height = 2});
+        const std::vector<unsigned char> bytes{0, 255, 1, 254, 100, 50, 200, 150};
+        t.upload(std::as_bytes(std::span(bytes.data(), std::size_t(4 * channels))));
+        const std::vector<float> back = device_->read_texture(t);
+        EXPECT_EQ(device_->take_errors(), "");
+        ASSERT_EQ(back.size(), 16u);
+        for (int i = 0; i < 4; ++i) {
+            const std::size_t at = std::size_t(i * channels), px = std::size_t(4 * i);
+            EXPECT_FLOAT_EQ(back[px], bytes[at] / 255.0f) << "texel " << i;
+            EXPECT_FLOAT_EQ(back[px + 1], channels > 1 ? bytes[at + 1] / 255.0f : 0.0f) << "texel " << i;
+            EXPECT_FLOAT_EQ(back[px + 3], 1.0f) << "texel " << i;
         }
     }
 }
