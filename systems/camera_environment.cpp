@@ -1,6 +1,5 @@
 #include "systems/camera_environment.hpp"
 
-#include <drm_fourcc.h>
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -55,7 +54,7 @@ const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::Camer
         const auto pitch = static_cast<std::uint32_t>(image.stride);
         auto made = device.create_external_image(
             {.label = "camera buffer",
-             .drm_fourcc = nv12 ? DRM_FORMAT_NV12 : DRM_FORMAT_YUYV,
+             .format = nv12 ? gpu::DmabufFormat::Nv12 : gpu::DmabufFormat::Yuyv,
              .width = image.width,
              .height = image.height,
              .planes = {{.fd = image.dmabuf_fd, .offset = 0, .pitch = pitch},

@@ -2,6 +2,7 @@
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <drm_fourcc.h>
 
 #include <cstring>
 #include <utility>
@@ -120,7 +121,8 @@ Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& des
                                  EGL_HEIGHT,
                                  desc.height,
                                  EGL_LINUX_DRM_FOURCC_EXT,
-                                 static_cast<EGLint>(desc.drm_fourcc),
+                                 static_cast<EGLint>(desc.format == DmabufFormat::Nv12 ? DRM_FORMAT_NV12
+                                                                                       : DRM_FORMAT_YUYV),
                                  EGL_YUV_COLOR_SPACE_HINT_EXT,
                                  desc.bt709 ? EGL_ITU_REC709_EXT : EGL_ITU_REC601_EXT,
                                  EGL_SAMPLE_RANGE_HINT_EXT,

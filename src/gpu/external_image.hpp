@@ -24,10 +24,13 @@ struct DmabufPlane {
     std::uint32_t offset = 0, pitch = 0;
 };
 
+// The layouts a camera's dmabuf comes in (drm_fourcc.h's DRM_FORMAT_YUYV and DRM_FORMAT_NV12 to EGL).
+enum class DmabufFormat { Yuyv, Nv12 };
+
 struct ExternalImageDesc {
     std::string label;
-    // Either a dmabuf (fd >= 0 in planes[0]) with a DRM fourcc ...
-    std::uint32_t drm_fourcc = 0;  // DRM_FORMAT_YUYV, DRM_FORMAT_NV12
+    // Either a dmabuf (fd >= 0 in planes[0]) in this layout ...
+    DmabufFormat format = DmabufFormat::Yuyv;
     int width = 0, height = 0;
     DmabufPlane planes[2];
     bool bt709 = false;       // EGL_YUV_COLOR_SPACE_HINT_EXT
