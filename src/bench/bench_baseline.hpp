@@ -1,5 +1,5 @@
 #pragma once
-// puddle-bench's stored baseline (src/app/bench_baseline.json): ratios to the floor pass (or to raymarch)
+// puddle-bench's stored baseline (src/bench/bench_baseline.json): ratios to the floor pass (or to raymarch)
 // and the render shader's estimated cost, by name, never milliseconds. A ratio only warns when it rises
 // (one run on a shared machine can be off by half); a shader cost is exact, so its rise is a regression.
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace puddle::gpu {
+namespace puddle::bench {
 
 struct ShaderCost {
     int texture_fetches = 0;
@@ -21,4 +21,4 @@ struct ShaderCost {
 // ray-march that breaks after a uniform number of steps.
 ShaderCost estimate_shader_cost(std::string_view source, int max_loop_iterations = 64);
 
-}  // namespace puddle::gpu
+}  // namespace puddle::bench

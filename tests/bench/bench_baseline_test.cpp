@@ -1,7 +1,7 @@
-// puddle-bench's stored baseline (app/bench_baseline.hpp): figures written and read back, a filtered run
+// puddle-bench's stored baseline (bench/bench_baseline.hpp): figures written and read back, a filtered run
 // keeping the figures it did not make, and which rises fail a build (shader costs) and which only warn
 // (timing ratios).
-#include "app/bench_baseline.hpp"
+#include "bench/bench_baseline.hpp"
 
 #include <gtest/gtest.h>
 

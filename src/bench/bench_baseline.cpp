@@ -1,4 +1,4 @@
-#include "app/bench_baseline.hpp"
+#include "bench/bench_baseline.hpp"
 
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "gpu/shader_cost.hpp"
+#include "bench/shader_cost.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-namespace puddle::gpu {
+namespace puddle::bench {
 
 namespace {
 
@@ -218,4 +218,4 @@ ShaderCost estimate_shader_cost(std::string_view source, int max_loop_iterations
     return Estimator(tokenize(preprocess(source)), std::max(max_loop_iterations, 1)).function("main");
 }
 
-}  // namespace puddle::gpu
+}  // namespace puddle::bench

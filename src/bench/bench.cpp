@@ -13,8 +13,8 @@
 // --benchmark_out=FILE so the table does not mix with the JSON.
 //
 // After the table: the render shader's estimated per-pixel cost (texture fetches and ALU operations,
-// gpu/shader_cost.hpp) for both methods, then a check against the stored baseline
-// (src/app/bench_baseline.json): ratios to the floor and the shader cost, never milliseconds. A figure
+// bench/shader_cost.hpp) for both methods, then a check against the stored baseline
+// (src/bench/bench_baseline.json): ratios to the floor and the shader cost, never milliseconds. A figure
 // over its baseline by more than the tolerance is flagged REGRESSION; the exit status is 1 when the
 // shader cost (exact, so a real change) regressed. A ratio only warns: on a shared machine one run's
 // ratio can be off by half; repeat the run before believing it.
@@ -36,14 +36,14 @@
 
 #include <fmt/format.h>
 
-#include "app/bench_baseline.hpp"
+#include "bench/bench_baseline.hpp"
 #include "app/engine.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "camera/mjpeg_decoder.hpp"
 #include "camera/mjpeg_encoder.hpp"
 #include "systems/camera_environment.hpp"
 #include "assets/procedural.hpp"
-#include "gpu/shader_cost.hpp"
+#include "bench/shader_cost.hpp"
 #include "gpu/shader_source.hpp"
 #include "params/config_loader.hpp"
 #include "systems/analytic_ripple_system.hpp"
@@ -472,12 +472,12 @@ void print_camera_summary(const Collector& c) {
 
 // The render shader's estimated per-pixel cost for one method: the variant the default parameters select
 // (systems/puddle_variant.hpp), with the default march steps.
-gpu::ShaderCost shader_cost(const char* method) {
+bench::ShaderCost shader_cost(const char* method) {
     systems::PuddleVariant v = systems::choose_puddle_variant(Params{}, false);
     v.raymarch = std::string(method) == "raymarch";
     auto shader = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
     if (!shader) return {};
-    return gpu::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
+    return bench::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
 }
 
 Figures figures(const Collector& c) {
@@ -492,7 +492,7 @@ Figures figures(const Collector& c) {
         if (rm && in) f[fmt::format("render/intersect/{} x raymarch", size_name(s))] = *in / *rm;
     }
     for (const char* m : methods) {
-        const gpu::ShaderCost cost = shader_cost(m);
+        const bench::ShaderCost cost = shader_cost(m);
         f[fmt::format("shader/{} texture fetches", m)] = cost.texture_fetches;
         f[fmt::format("shader/{} alu ops", m)] = cost.alu_ops;
     }
@@ -501,7 +501,7 @@ Figures figures(const Collector& c) {
 
 // Prints the shader cost, then each figure beside its baseline; true when a shader cost regressed.
 bool print_against_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
-    std::printf("\nRender shader, estimated per pixel (longest path, from the source; gpu/shader_cost.hpp)\n");
+    std::printf("\nRender shader, estimated per pixel (longest path, from the source; bench/shader_cost.hpp)\n");
     for (const char* m : methods)
         std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n", m,
                     now.at(fmt::format("shader/{} texture fetches", m)), now.at(fmt::format("shader/{} alu ops", m)));

@@ -1,16 +1,16 @@
-// The per-pixel cost estimate the benchmark prints (gpu/shader_cost.hpp): exact counts on small shaders,
+// The per-pixel cost estimate the benchmark prints (bench/shader_cost.hpp): exact counts on small shaders,
 // and the orderings that matter on the real one.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "gpu/shader_cost.hpp"
+#include "bench/shader_cost.hpp"
 #include "gpu/shader_source.hpp"
 #include "params/param_store.hpp"
 #include "systems/puddle_variant.hpp"
 
-namespace puddle::gpu {
+namespace puddle::bench {
 namespace {
 
 TEST(ShaderCost, CountsFetchesOperatorsAndBuiltins) {
@@ -55,9 +55,9 @@ TEST(ShaderCost, FollowsTheVariantsDefines) {
 // The variant the default parameters select: checkerboard ground, no RGBM, the soft tone curve.
 TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     systems::PuddleVariant v = systems::choose_puddle_variant(params::Params{}, false);
-    auto intersect = assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    auto intersect = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
     v.raymarch = true;
-    auto raymarch = assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    auto raymarch = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
     ASSERT_TRUE(intersect.ok() && raymarch.ok());
     const ShaderCost i = estimate_shader_cost(intersect->source, 14), r = estimate_shader_cost(raymarch->source, 14);
     EXPECT_EQ(i.texture_fetches, 2);  // the surface once, the sky once (reflected or direct)
@@ -70,7 +70,7 @@ TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
     systems::PuddleVariant v = systems::choose_puddle_variant(params::Params{}, false);
     const auto cost = [&](systems::GroundKind g) {
         v.ground = g;
-        auto s = assemble_shader("puddle.frag", systems::variant_defines(v, false));
+        auto s = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
         return s ? estimate_shader_cost(s->source, 14) : ShaderCost{};
     };
     const ShaderCost checker = cost(systems::GroundKind::Checkerboard), image = cost(systems::GroundKind::Image),
@@ -81,4 +81,4 @@ TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
 }
 
 }  // namespace
-}  // namespace puddle::gpu
+}  // namespace puddle::bench
