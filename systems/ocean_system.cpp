@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "systems/camera_basis.hpp"
+#include "systems/view_basis.hpp"
 #include "systems/param_uniforms.hpp"
 #include "systems/shader_phase.hpp"
 
@@ -41,8 +41,8 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
     if (!ocean.pass.request(device, ocean_desc)) return;
     const gpu::FrameTarget& frame = target.target;
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const CameraBasis cam =
-        camera_basis(params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
+    const ViewBasis cam =
+        view_basis(params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
                      params.get<ParamId::camera_fov>(), aspect);
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(ocean.pass.pipeline);

@@ -6,7 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "systems/camera_basis.hpp"
+#include "systems/view_basis.hpp"
 #include "systems/param_uniforms.hpp"
 
 namespace puddle::systems {
@@ -64,7 +64,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
 
     // Everything uniform across the screen is worked out here once, not per pixel.
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const CameraBasis cam = camera_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
+    const ViewBasis cam = view_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
                                          params.get<ParamId::camera_fov>(), aspect);
     const float a = params.get<ParamId::environment_rotation>();
     // Column-major rotation about +Y.

@@ -1,4 +1,4 @@
-#include "systems/camera_basis.hpp"
+#include "systems/view_basis.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -6,8 +6,8 @@
 
 namespace puddle::systems {
 
-CameraBasis camera_basis(glm::vec3 eye, glm::vec3 target, float fov_degrees, float aspect) {
-    CameraBasis b;
+ViewBasis view_basis(glm::vec3 eye, glm::vec3 target, float fov_degrees, float aspect) {
+    ViewBasis b;
     const glm::vec3 forward = target - eye;
     if (glm::length(forward) > 1e-6f) b.forward = glm::normalize(forward);
     const glm::vec3 right = glm::cross(b.forward, glm::vec3(0, 1, 0));
