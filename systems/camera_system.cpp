@@ -10,10 +10,14 @@ namespace {
 
 camera::FormatPreference format_preference(params::CameraFormat format) {
     switch (format) {
-        case params::CameraFormat::yuyv: return camera::FormatPreference::Yuyv;
-        case params::CameraFormat::nv12: return camera::FormatPreference::Nv12;
-        case params::CameraFormat::mjpeg: return camera::FormatPreference::Mjpeg;
-        case params::CameraFormat::automatic: break;
+        case params::CameraFormat::yuyv:
+            return camera::FormatPreference::Yuyv;
+        case params::CameraFormat::nv12:
+            return camera::FormatPreference::Nv12;
+        case params::CameraFormat::mjpeg:
+            return camera::FormatPreference::Mjpeg;
+        case params::CameraFormat::automatic:
+            break;
     }
     return camera::FormatPreference::Auto;
 }
@@ -133,7 +137,8 @@ void camera_feed_system(CameraFeed& feed, const params::Params& params, const ec
         return;
     }
     if (feed.source && !still_requested(params, feed.request)) {
-        spdlog::info("camera: settings changed; reopening {}", params.get<ParamId::environment_camera_device>());
+        spdlog::info("camera: settings changed; reopening {}",
+                     params.get<ParamId::environment_camera_device>());
         close_feed(feed, env, camera_request(params));
         feed.retry_at = feed.now + camera_retry_seconds;
         return;

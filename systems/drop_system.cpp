@@ -15,7 +15,9 @@ std::uint64_t mix64(std::uint64_t z) {
     return z ^ (z >> 31);
 }
 
-float unit_float(std::uint64_t h) { return static_cast<float>(h >> 40) / static_cast<float>(1ull << 24); }
+float unit_float(std::uint64_t h) {
+    return static_cast<float>(h >> 40) / static_cast<float>(1ull << 24);
+}
 
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
@@ -24,7 +26,9 @@ double smoothstep(double e0, double e1, double x) {
 
 }  // namespace
 
-float drop_phase_offset(int slot) { return static_cast<float>(slot) * 0.3711f; }
+float drop_phase_offset(int slot) {
+    return static_cast<float>(slot) * 0.3711f;
+}
 
 float drop_activation(double p) {
     return static_cast<float>(smoothstep(0.0, 0.15, p) * smoothstep(0.35, 0.2, p));

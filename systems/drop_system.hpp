@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstdint>
-
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -20,10 +19,10 @@ inline constexpr int max_drops = 128;  // the wave shader's uniform array size (
 
 // Component of a drop entity.
 struct Drop {
-    int slot = 0;              // which of the rain.drop_count drops
-    std::int64_t cycle = 0;    // which of its cycles this is
-    glm::vec2 position{};      // in the height field, 0..1 on both axes
-    float strength = 0.0f;     // intensity * (0.5 + 0.5 * random)
+    int slot = 0;            // which of the rain.drop_count drops
+    std::int64_t cycle = 0;  // which of its cycles this is
+    glm::vec2 position{};    // in the height field, 0..1 on both axes
+    float strength = 0.0f;   // intensity * (0.5 + 0.5 * random)
 };
 
 // Resource: the entity of each slot (invalid when the slot is empty).
@@ -44,8 +43,8 @@ struct DropSample {
     float strength;
 };
 DropSample sample_drop(std::uint32_t seed, int slot, std::int64_t cycle, float intensity);
-float drop_phase_offset(int slot);       // slot * 0.3711
-float drop_activation(double phase);     // smoothstep(0, .15, p) * smoothstep(.35, .2, p)
+float drop_phase_offset(int slot);    // slot * 0.3711
+float drop_activation(double phase);  // smoothstep(0, .15, p) * smoothstep(.35, .2, p)
 
 void drop_system(const params::Params& params, const FrameClock& clock, ecs::World& world, DropSlots& slots,
                  LiveDrops& live);

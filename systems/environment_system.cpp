@@ -19,11 +19,12 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
     const assets::Image& image = prepared.image;
     Ground g;
     g.source = std::move(prepared.source);
-    auto texture = device.create_texture({.label = "ground",
-                                          .format = gpu::TextureFormat::SRGB8_A8,
-                                          .width = image.width,
-                                          .height = image.height,
-                                          .mip_levels = gpu::full_mip_count(std::max(image.width, image.height))});
+    auto texture =
+        device.create_texture({.label = "ground",
+                               .format = gpu::TextureFormat::SRGB8_A8,
+                               .width = image.width,
+                               .height = image.height,
+                               .mip_levels = gpu::full_mip_count(std::max(image.width, image.height))});
     if (!texture) return texture.error();
     g.texture = std::move(texture).value();
     g.texture.upload(std::as_bytes(std::span(image.data)));

@@ -27,7 +27,8 @@ void frame_clock_system(const ecs::FrameTime& time, const params::Params& params
 
 void begin_step_system(FrameClock& clock) {
     ++clock.step_index;
-    clock.sim_time = clock.epoch_time + static_cast<double>(clock.step_index - clock.epoch_step) * clock.step_seconds;
+    clock.sim_time =
+        clock.epoch_time + static_cast<double>(clock.step_index - clock.epoch_step) * clock.step_seconds;
 }
 
 }  // namespace puddle::systems

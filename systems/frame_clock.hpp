@@ -10,15 +10,15 @@
 namespace puddle::systems {
 
 struct FrameClock {
-    double accumulator = 0.0;    // time not yet simulated
+    double accumulator = 0.0;  // time not yet simulated
     double step_seconds = 1.0 / 60.0;
-    double sim_time = 0.0;       // time of the step being simulated (advanced by begin_step)
+    double sim_time = 0.0;  // time of the step being simulated (advanced by begin_step)
     std::uint64_t step_index = 0;
     // sim_time = epoch_time + (step_index - epoch_step) * step_seconds: a product, not a running sum, so
     // months of steps lose no precision. The epoch moves only when the step rate changes.
     double epoch_time = 0.0;
     std::uint64_t epoch_step = 0;
-    int steps_due = 0;           // simulate-stage runs this frame
+    int steps_due = 0;             // simulate-stage runs this frame
     int max_steps_per_frame = 16;  // a stalled frame drops time rather than spiralling
     std::uint64_t dropped_steps = 0;
 };

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <numbers>
 
-#include "systems/view_basis.hpp"
 #include "systems/param_uniforms.hpp"
 #include "systems/shader_phase.hpp"
+#include "systems/view_basis.hpp"
 
 namespace puddle::systems {
 
@@ -34,7 +34,9 @@ Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean) {
     return ocean.pass.ensure(device, ocean_desc);
 }
 
-bool request_ocean(gpu::Device& device, OceanRenderer& ocean) { return ocean.pass.request(device, ocean_desc); }
+bool request_ocean(gpu::Device& device, OceanRenderer& ocean) {
+    return ocean.pass.request(device, ocean_desc);
+}
 
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                   OceanRenderer& ocean, const RenderTarget& target) {
@@ -43,7 +45,7 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
     const ViewBasis cam =
         view_basis(params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
-                     params.get<ParamId::camera_fov>(), aspect);
+                   params.get<ParamId::camera_fov>(), aspect);
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(ocean.pass.pipeline);
     set_param_uniforms(pass, ocean.pass.params, params);

@@ -29,13 +29,15 @@ Result<ParamBinding> bind_params(const gpu::Pipeline& pipeline) {
         for (const params::ParamDecl& d : params::param_decls())
             if (d.uniform == name) match = &d;
         if (match) {
-            if (match->kind != params::ParamKind::Path) binding.slots.push_back({pipeline.uniform(name), match});
+            if (match->kind != params::ParamKind::Path)
+                binding.slots.push_back({pipeline.uniform(name), match});
             continue;
         }
         if (has_section_prefix(name)) {
             std::string guess(name.substr(2));
             guess[guess.find('_')] = '.';
-            return make_error(ExitCode::Runtime, "gpu: pipeline '{}': uniform {} is no parameter (did you mean {}?)",
+            return make_error(ExitCode::Runtime,
+                              "gpu: pipeline '{}': uniform {} is no parameter (did you mean {}?)",
                               pipeline.label(), name, params::nearest_param_name(guess));
         }
     }

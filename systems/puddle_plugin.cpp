@@ -4,9 +4,9 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "systems/analytic_ripple_system.hpp"
 #include "systems/camera_environment.hpp"
 #include "systems/camera_system.hpp"
-#include "systems/analytic_ripple_system.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/environment_system.hpp"
 #include "systems/frame_clock.hpp"
@@ -28,7 +28,8 @@ using params::Params;
 namespace {
 
 // Both or neither: a surface that fails to build keeps the old field too (their sizes must match).
-Result<void> build_field_and_surface(gpu::Device& device, const Params& params, WaveField& field, Surface& surface) {
+Result<void> build_field_and_surface(gpu::Device& device, const Params& params, WaveField& field,
+                                     Surface& surface) {
     WaveField new_field;
     Surface new_surface;
     if (auto r = build_wave_field(device, params, new_field); !r) return r;
@@ -66,14 +67,20 @@ Result<void> prepare_selected_look(ecs::World& world) {
     if (params.get<ParamId::overlay_rain>())
         if (auto r = prepare_rain_overlay(device, world.resource<RainOverlay>()); !r) return r;
     switch (selected_scene(params)) {
-        case Scene::ocean: return prepare_ocean(device, world.resource<OceanRenderer>());
-        case Scene::street: return prepare_street(device, world.resource<StreetRenderer>());
-        case Scene::puddle: break;
+        case Scene::ocean:
+            return prepare_ocean(device, world.resource<OceanRenderer>());
+        case Scene::street:
+            return prepare_street(device, world.resource<StreetRenderer>());
+        case Scene::puddle:
+            break;
     }
     switch (selected_drop_model(params)) {
-        case DropModel::analytic: return prepare_analytic_ripples(device, surface, world.resource<AnalyticRipples>());
-        case DropModel::grid: return prepare_grid_drops(device, surface, world.resource<GridDrops>());
-        case DropModel::pulse: break;
+        case DropModel::analytic:
+            return prepare_analytic_ripples(device, surface, world.resource<AnalyticRipples>());
+        case DropModel::grid:
+            return prepare_grid_drops(device, surface, world.resource<GridDrops>());
+        case DropModel::pulse:
+            break;
     }
     return {};
 }
@@ -127,7 +134,8 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
 
     schedule.add(Stage::Render, "surface", surface_system).run_if(wave_field_in_use());
     schedule.add(Stage::Render, "camera environment", camera_environment_system);
-    schedule.add(Stage::Render, "analytic ripples", analytic_ripple_system).run_if(drops_are(DropModel::analytic));
+    schedule.add(Stage::Render, "analytic ripples", analytic_ripple_system)
+        .run_if(drops_are(DropModel::analytic));
     schedule.add(Stage::Render, "grid drops", grid_drop_system).run_if(drops_are(DropModel::grid));
     schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::puddle));
     schedule.add(Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::ocean));

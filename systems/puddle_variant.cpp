@@ -1,9 +1,9 @@
 #include "systems/puddle_variant.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "params/registry.hpp"
 
@@ -23,7 +23,8 @@ constexpr float bound = 4.0f;
 
 bool ground_hidden(const params::Params& params) {
     // The ground plane is at y = -depth; the lowest trough of the water top is the nearest point to it.
-    const float trough = 0.5f * params.get<ParamId::puddle_size>().y - bound * params.get<ParamId::wave_height_scale>();
+    const float trough =
+        0.5f * params.get<ParamId::puddle_size>().y - bound * params.get<ParamId::wave_height_scale>();
     const float shortest = std::max(trough + params.get<ParamId::puddle_depth>(), 0.0f);
     return brightest_ground * std::exp(-params.get<ParamId::water_turbidity>() * shortest) < hidden_below;
 }
@@ -31,9 +32,9 @@ bool ground_hidden(const params::Params& params) {
 PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm) {
     PuddleVariant v;
     v.raymarch = params.get<ParamId::render_method>() == params::RenderMethod::raymarch;
-    v.ground = ground_hidden(params)                   ? GroundKind::Hidden
+    v.ground = ground_hidden(params)                        ? GroundKind::Hidden
                : params.get<ParamId::ground_checkerboard>() ? GroundKind::Checkerboard
-                                                        : GroundKind::Image;
+                                                            : GroundKind::Image;
     v.env_rgbm = env_rgbm;
     v.tonemap = params.get<ParamId::look_tonemap>();
     return v;

@@ -1,13 +1,12 @@
 #include "systems/render_system.hpp"
 
-#include <cmath>
-
-#include <glm/mat3x3.hpp>
-
 #include <spdlog/spdlog.h>
 
-#include "systems/view_basis.hpp"
+#include <cmath>
+#include <glm/mat3x3.hpp>
+
 #include "systems/param_uniforms.hpp"
+#include "systems/view_basis.hpp"
 
 namespace puddle::systems {
 
@@ -64,8 +63,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
 
     // Everything uniform across the screen is worked out here once, not per pixel.
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const ViewBasis cam = view_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
-                                         params.get<ParamId::camera_fov>(), aspect);
+    const ViewBasis cam =
+        view_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
+                   params.get<ParamId::camera_fov>(), aspect);
     const float a = params.get<ParamId::environment_rotation>();
     // Column-major rotation about +Y.
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
@@ -82,8 +82,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_scale", cam.scale)
         .set("u_env_matrix", env_matrix)
         .set("u_env_scale", std::exp2(params.get<ParamId::environment_exposure>()))
-        .set("u_slope_scale", static_cast<float>(surface.resolution) * 0.5f /
-                                  glm::vec2(params.get<ParamId::puddle_size>().x, params.get<ParamId::puddle_size>().z));
+        .set("u_slope_scale",
+             static_cast<float>(surface.resolution) * 0.5f /
+                 glm::vec2(params.get<ParamId::puddle_size>().x, params.get<ParamId::puddle_size>().z));
     pass.draw_fullscreen();
 }
 

@@ -4,9 +4,13 @@ namespace puddle::systems {
 
 using params::ParamId;
 
-Scene selected_scene(const params::Params& params) { return params.get<ParamId::scene_kind>(); }
+Scene selected_scene(const params::Params& params) {
+    return params.get<ParamId::scene_kind>();
+}
 
-DropModel selected_drop_model(const params::Params& params) { return params.get<ParamId::drops_model>(); }
+DropModel selected_drop_model(const params::Params& params) {
+    return params.get<ParamId::drops_model>();
+}
 
 }  // namespace puddle::systems
 

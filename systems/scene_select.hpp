@@ -9,7 +9,7 @@
 
 namespace puddle::systems {
 
-using Scene = params::SceneKind;      // scene.kind: puddle, ocean, street
+using Scene = params::SceneKind;       // scene.kind: puddle, ocean, street
 using DropModel = params::DropsModel;  // drops.model: pulse, analytic, grid
 
 Scene selected_scene(const params::Params& params);
@@ -28,8 +28,8 @@ ShownLook selected_look(const params::Params& params);
 std::string describe(const ShownLook& look);
 
 // Run conditions on the look on screen (ShownLook), for the systems that draw or simulate one look.
-ecs::RunCondition look_is(Scene scene);          // "look is ocean"
-ecs::RunCondition drops_are(DropModel drops);    // the puddle with these drops: "drops are grid"
+ecs::RunCondition look_is(Scene scene);        // "look is ocean"
+ecs::RunCondition drops_are(DropModel drops);  // the puddle with these drops: "drops are grid"
 // The puddle's surface comes from the simulated wave field only with the pulse drops; analytic and grid
 // drops write it themselves, and the other scenes need no simulation.
 ecs::RunCondition wave_field_in_use();

@@ -16,7 +16,7 @@ struct Surface {
     gpu::Sampler field_sampler;  // nearest, for the field
     gpu::Sampler sampler;        // linear, clamp: how the render pass reads the surface
     int resolution = 0;
-    bool unorm = false;          // RGBA8 fallback encoding (SURFACE_UNORM in the shaders)
+    bool unorm = false;  // RGBA8 fallback encoding (SURFACE_UNORM in the shaders)
     bool field_fixed_point = false;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // The eye: a pinhole camera as the fullscreen shaders take it (forward, right and up axes and the half
 // extents of the image plane at distance 1), worked out once per frame on the CPU, not per pixel. Called
-// the view in the code, so that "camera" means only the V4L2 feed; the config's camera.* keys keep their names.
+// the view in the code, so that "camera" means only the V4L2 feed; the config's camera.* keys keep their
+// names.
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

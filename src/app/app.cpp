@@ -1,26 +1,26 @@
 #include "app/app.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <thread>
 
-#include <spdlog/spdlog.h>
-
-#include "app/cli.hpp"
 #include "app/check.hpp"
+#include "app/cli.hpp"
 #include "app/engine.hpp"
-#include "app/process_setup.hpp"
-#include "app/service_plugin.hpp"
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
+#include "app/process_setup.hpp"
 #include "app/service_notify.hpp"
+#include "app/service_plugin.hpp"
 #include "app/signals.hpp"
 #include "app/version.hpp"
 #include "assets/image_io.hpp"
-#include "params/config_loader.hpp"
 #include "io/gpio_backend.hpp"
+#include "params/config_loader.hpp"
 #include "params/param_docs.hpp"
 #include "platform/console_mode.hpp"
 #include "systems/live_tuning.hpp"
@@ -77,7 +77,8 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     std::vector<params::ConfigEntry> command_line;
     if (o.seed) command_line.push_back({params::ParamId::rain_seed, *o.seed, 0});
     if (!o.camera.empty()) {  // shorthand for the two --set lines it stands for; a --set still wins
-        for (const std::string& s : {std::string("environment.source=camera"), "environment.camera_device=" + o.camera}) {
+        for (const std::string& s :
+             {std::string("environment.source=camera"), "environment.camera_device=" + o.camera}) {
             auto entry = params::parse_assignment(s);
             if (!entry) return entry.error();
             command_line.push_back(std::move(*entry));
@@ -90,8 +91,10 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     }
     const std::string path = config_path(o);
     std::vector<std::string> preset_folders{system_presets};
-    if (!path.empty()) preset_folders.push_back((std::filesystem::path(path).parent_path() / "presets").string());
-    systems::LiveTuning tuning(params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
+    if (!path.empty())
+        preset_folders.push_back((std::filesystem::path(path).parent_path() / "presets").string());
+    systems::LiveTuning tuning(
+        params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
     tuning.config_path = path;
     if (!path.empty()) {
         auto config = params::load_config_file(path);
@@ -117,7 +120,9 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
 std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals, ServiceNotify& service,
                                             systems::LiveTuning& tuning) {
     return {
-        [&](ecs::World& w, ecs::Schedule& s) { return add_service_plugin(w, s, std::move(signals), std::move(service)); },
+        [&](ecs::World& w, ecs::Schedule& s) {
+            return add_service_plugin(w, s, std::move(signals), std::move(service));
+        },
         [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
         systems::add_puddle_plugin,
     };
@@ -128,9 +133,10 @@ namespace {
 // One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
 void log_stats(const FrameStats::Summary& s) {
     const MemoryStatus m = read_memory_status();
-    spdlog::info("stats: {:.1f} fps over {} frames; frame ms p50 {:.2f} p95 {:.2f} p99 {:.2f} max {:.2f}; "
-                 "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB",
-                 s.fps, s.frames, s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms, s.cpu_ms, s.main_cpu_ms, m.rss_kib / 1024.0);
+    spdlog::info(
+        "stats: {:.1f} fps over {} frames; frame ms p50 {:.2f} p95 {:.2f} p99 {:.2f} max {:.2f}; "
+        "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB",
+        s.fps, s.frames, s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms, s.cpu_ms, s.main_cpu_ms, m.rss_kib / 1024.0);
 }
 
 }  // namespace
@@ -149,7 +155,8 @@ int run(int argc, const char* const* argv) {
     spdlog::set_level(spdlog::level::from_str(o.log_level));
 
     if (o.list_params) {
-        std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(), stdout);
+        std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(),
+                   stdout);
         return 0;
     }
     if (o.check) return run_check(o, config_path(o));
@@ -181,19 +188,23 @@ int run(int argc, const char* const* argv) {
     const std::string preset = e.world().resource<systems::LiveTuning>().layers.preset_name();
     const auto& caps = e.device().caps();
     spdlog::info("started: {}; GL: {} ({}); config: {}; preset: {}", e.display().describe(), caps.renderer,
-                 caps.version, config_path(o).empty() ? "none" : config_path(o), preset.empty() ? "none" : preset);
+                 caps.version, config_path(o).empty() ? "none" : config_path(o),
+                 preset.empty() ? "none" : preset);
 
     long frames = o.frames.value_or(headless ? headless_default_frames : 0);  // 0: run until stopped
     std::string screenshot = o.screenshot;
     if (headless && screenshot.empty() && !o.frames) screenshot = headless_default_screenshot;
 
     // On a kiosk screen the text console must not draw over the picture; restored on every exit path.
-    const auto console = e.display().kind() == platform::BackendKind::Kms ? platform::ConsoleGraphicsMode::enter()
-                                                                         : std::nullopt;
+    const auto console = e.display().kind() == platform::BackendKind::Kms
+                             ? platform::ConsoleGraphicsMode::enter()
+                             : std::nullopt;
     if (service.enabled())
-        spdlog::info("systemd: READY after the first frame{}", service.watchdog_interval() > 0
-                         ? fmt::format(", watchdog every {:g} s while frames are presented", service.ping_interval())
-                         : std::string());
+        spdlog::info(
+            "systemd: READY after the first frame{}",
+            service.watchdog_interval() > 0
+                ? fmt::format(", watchdog every {:g} s while frames are presented", service.ping_interval())
+                : std::string());
     using clock = std::chrono::steady_clock;
     const double fixed_dt = 1.0 / (o.fps_cap > 0 ? o.fps_cap : 60.0);
     auto last = clock::now();
@@ -204,12 +215,14 @@ int run(int argc, const char* const* argv) {
             if (const auto s = stats.take_report()) log_stats(*s);
         }
         if (stop.requested() || !e.display().poll_events()) {
-            spdlog::info("stopping ({})", stop.last_signal() ? strsignal(stop.last_signal()) : "display closed");
+            spdlog::info("stopping ({})",
+                         stop.last_signal() ? strsignal(stop.last_signal()) : "display closed");
             break;
         }
         // Headless runs advance a fixed step per frame, so the same command line gives the same image.
         const auto now = clock::now();
-        const double dt = headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
+        const double dt =
+            headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
         last = now;
         if (!screenshot.empty() && frames != 0 && n == frames - 1) e.capture_next_frame();
         if (auto r = e.frame(dt); !r) {  // a lost GPU or screen; the watchdog was pinged only after presents
@@ -224,9 +237,10 @@ int run(int argc, const char* const* argv) {
     if (o.stats_every > 0) {
         if (const auto s = stats.summary(); s.frames > 0) log_stats(s);
         const MemoryStatus m = read_memory_status();
-        spdlog::info("stats: peak resident memory {:.1f} MB (VmHWM), {:.1f} MB now (VmRSS: {:.1f} MB anonymous, "
-                     "{:.1f} MB of the binary and shared libraries)",
-                     m.peak_kib / 1024.0, m.rss_kib / 1024.0, m.anon_kib / 1024.0, m.file_kib / 1024.0);
+        spdlog::info(
+            "stats: peak resident memory {:.1f} MB (VmHWM), {:.1f} MB now (VmRSS: {:.1f} MB anonymous, "
+            "{:.1f} MB of the binary and shared libraries)",
+            m.peak_kib / 1024.0, m.rss_kib / 1024.0, m.anon_kib / 1024.0, m.file_kib / 1024.0);
     }
     if (!screenshot.empty()) {
         // Both branches are values: a `const Image&` bound to `cond ? read_frame() : captured()` was a copy.

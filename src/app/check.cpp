@@ -1,12 +1,12 @@
 #include "app/check.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "app/cli.hpp"
 #include "app/version.hpp"
@@ -25,9 +25,13 @@ namespace {
 
 struct Report {
     int problems = 0;
-    void section(std::string_view name) { std::printf("\n[%.*s]\n", static_cast<int>(name.size()), name.data()); }
+    void section(std::string_view name) {
+        std::printf("\n[%.*s]\n", static_cast<int>(name.size()), name.data());
+    }
     void ok(const std::string& text) { std::printf("  OK    %s\n", text.c_str()); }
-    void absent(const std::string& text) { std::printf("  --    %s\n", text.c_str()); }  // fine, just not here
+    void absent(const std::string& text) {
+        std::printf("  --    %s\n", text.c_str());
+    }  // fine, just not here
     void fix(const std::string& text) {
         std::printf("  FIX   %s\n", text.c_str());
         ++problems;
@@ -47,7 +51,8 @@ std::string join(const std::vector<std::string>& items, std::size_t max) {
 int run_check(const CliOptions& o, const std::string& config_path) {
     Report r;
     int exit_code = 0;
-    if (spdlog::get_level() < spdlog::level::warn) spdlog::set_level(spdlog::level::warn);  // the report is the output
+    if (spdlog::get_level() < spdlog::level::warn)
+        spdlog::set_level(spdlog::level::warn);  // the report is the output
     std::printf("puddle %s --check\n", std::string(version()).c_str());
 
     r.section("config");
@@ -61,14 +66,16 @@ int run_check(const CliOptions& o, const std::string& config_path) {
             exit_code = static_cast<int>(ExitCode::Config);
         } else {
             r.ok(fmt::format("{}: valid ({} values, {} knobs{}{})", config_path, config->entries.size(),
-                             config->knobs.size(), config->preset ? ", preset " : "", config->preset.value_or("")));
+                             config->knobs.size(), config->preset ? ", preset " : "",
+                             config->preset.value_or("")));
             knobs = config->knobs;
         }
     }
 
     r.section("display: DRM/KMS (--backend kms)");
     const auto cards = platform::list_drm_cards();
-    if (cards.empty()) r.absent("no /dev/dri/card*: no KMS screen here (the window and headless backends still work)");
+    if (cards.empty())
+        r.absent("no /dev/dri/card*: no KMS screen here (the window and headless backends still work)");
     for (const auto& card : cards) {
         switch (card.status) {
             case platform::DrmCardStatus::NoOutputs:  // a render-only GPU beside the display one: no fault
@@ -91,26 +98,33 @@ int run_check(const CliOptions& o, const std::string& config_path) {
         platform::DisplayOptions headless{.backend = platform::BackendKind::Headless, .size = {16, 16}};
         auto display = platform::create_display(headless);
         if (!display) {
-            r.fix(display.error().message + " (install Mesa: libegl-mesa0 libgl1-mesa-dri; check group render)");
+            r.fix(display.error().message +
+                  " (install Mesa: libegl-mesa0 libgl1-mesa-dri; check group render)");
             exit_code = exit_code ? exit_code : static_cast<int>(ExitCode::Display);
         } else {
             gpu::Device device;
             const auto& caps = device.caps();
             r.ok(fmt::format("{} / {} / {}", caps.vendor, caps.renderer, caps.version));
             auto feature = [&](bool have, const char* what, const char* without) {
-                if (have) r.ok(what);
-                else r.absent(fmt::format("{}: missing; {}", what, without));
+                if (have)
+                    r.ok(what);
+                else
+                    r.absent(fmt::format("{}: missing; {}", what, without));
             };
             feature(caps.float_render_targets, "float render targets (wave field in RG32F)",
                     "the wave field runs in fixed point (RG32I), the same picture");
             feature(caps.half_float_render_targets, "half-float render targets (HDR sky, surface)",
                     "HDR skies are stored as RGBM, the surface as RGBA8");
-            feature(caps.float_linear_filtering, "filtering of 32-bit float textures", "not needed: Puddle never filters them");
+            feature(caps.float_linear_filtering, "filtering of 32-bit float textures",
+                    "not needed: Puddle never filters them");
             feature(caps.timer_queries, "timer queries", "--stats and puddle-bench show CPU times only");
-            feature(caps.external_images, "external images (OES_EGL_image_external_essl3)", "camera frames are copied");
+            feature(caps.external_images, "external images (OES_EGL_image_external_essl3)",
+                    "camera frames are copied");
             feature(platform::current_display_has_extension("EGL_EXT_image_dma_buf_import"),
-                    "dmabuf import (EGL_EXT_image_dma_buf_import)", "camera frames are copied (glTexSubImage2D)");
-            feature(caps.anisotropic_filtering, "anisotropic filtering", "the ground is filtered trilinearly");
+                    "dmabuf import (EGL_EXT_image_dma_buf_import)",
+                    "camera frames are copied (glTexSubImage2D)");
+            feature(caps.anisotropic_filtering, "anisotropic filtering",
+                    "the ground is filtered trilinearly");
         }
     }
 
@@ -123,8 +137,8 @@ int run_check(const CliOptions& o, const std::string& config_path) {
         if (chips.empty()) r.absent("no GPIO chips (/dev/gpiochip*): knobs cannot work on this machine");
         for (const auto& chip : chips) {
             if (!chip.error.empty())
-                r.fix(fmt::format("{}: {} (add the user to group gpio; install deploy/99-puddle-gpio.rules)", chip.name,
-                                  chip.error));
+                r.fix(fmt::format("{}: {} (add the user to group gpio; install deploy/99-puddle-gpio.rules)",
+                                  chip.name, chip.error));
             else
                 r.ok(fmt::format("{} \"{}\", {} lines", chip.name, chip.label, chip.lines));
         }
@@ -138,8 +152,11 @@ int run_check(const CliOptions& o, const std::string& config_path) {
                 req.line = k.line_b;
                 b = (*gpio)->request(req);
             }
-            if (a && b) r.ok(fmt::format("knob {}: {}", i + 1, k.describe()));
-            else r.fix(fmt::format("knob {} ({}): {}", i + 1, k.describe(), (!a ? a.error() : b.error()).message));
+            if (a && b)
+                r.ok(fmt::format("knob {}: {}", i + 1, k.describe()));
+            else
+                r.fix(fmt::format("knob {} ({}): {}", i + 1, k.describe(),
+                                  (!a ? a.error() : b.error()).message));
         }
     }
 
@@ -152,13 +169,17 @@ int run_check(const CliOptions& o, const std::string& config_path) {
     std::sort(videos.begin(), videos.end());
     for (const auto& v : videos) {
         auto offer = camera::device_offer(camera::system_v4l2_io(), v);
-        if (!offer) r.fix(offer.error().message);
-        else if (offer->empty()) r.absent(fmt::format("{}: offers no capture formats (not a camera?)", v));
-        else r.ok(fmt::format("{}: {}", v, camera::describe_offer(*offer)));
+        if (!offer)
+            r.fix(offer.error().message);
+        else if (offer->empty())
+            r.absent(fmt::format("{}: offers no capture formats (not a camera?)", v));
+        else
+            r.ok(fmt::format("{}: {}", v, camera::describe_offer(*offer)));
     }
 
-    std::printf("\n%s\n", r.problems == 0 ? "Everything Puddle needs here is in order."
-                                          : fmt::format("{} thing(s) to fix (FIX above).", r.problems).c_str());
+    std::printf("\n%s\n", r.problems == 0
+                              ? "Everything Puddle needs here is in order."
+                              : fmt::format("{} thing(s) to fix (FIX above).", r.problems).c_str());
     return exit_code;
 }
 

@@ -12,23 +12,23 @@
 namespace puddle::app {
 
 struct CliOptions {
-    std::string config_path;          // empty: /etc/puddle/puddle.toml when it exists, else built-in defaults
-    std::vector<std::string> sets;    // --set name=value, applied last
+    std::string config_path;        // empty: /etc/puddle/puddle.toml when it exists, else built-in defaults
+    std::vector<std::string> sets;  // --set name=value, applied last
     bool list_params = false;
-    bool markdown = false;            // --list-params as the README's Markdown table
+    bool markdown = false;  // --list-params as the README's Markdown table
     bool print_config = false;
-    bool check = false;               // --check: report on this machine and exit
+    bool check = false;  // --check: report on this machine and exit
     platform::DisplayOptions display;
-    std::optional<long> frames;       // stop after N frames (headless default: 180)
-    std::string screenshot;           // write the last frame as PNG
-    std::optional<int> seed;          // shorthand for --set rain.seed=N
-    double fps_cap = 0;               // 0: the display's pace (vblank), headless: as fast as possible
-    bool fixed_step = false;          // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
+    std::optional<long> frames;  // stop after N frames (headless default: 180)
+    std::string screenshot;      // write the last frame as PNG
+    std::optional<int> seed;     // shorthand for --set rain.seed=N
+    double fps_cap = 0;          // 0: the display's pace (vblank), headless: as fast as possible
+    bool fixed_step = false;     // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
     std::string log_level = "info";
-    std::string camera;               // --camera DEVICE|mock:PATH: environment.source = camera from that device
-    double stats_every = 0;           // --stats[=SECONDS]: log fps, frame-time percentiles, CPU and memory; 0: off
-    std::string gpio = "gpiod";       // knob backend: gpiod, or mock:PATH (a script or FIFO of line changes)
-    std::string state_path;           // knob state file; empty: $STATE_DIRECTORY, $XDG_STATE_HOME or ~/.local/state
+    std::string camera;          // --camera DEVICE|mock:PATH: environment.source = camera from that device
+    double stats_every = 0;      // --stats[=SECONDS]: log fps, frame-time percentiles, CPU and memory; 0: off
+    std::string gpio = "gpiod";  // knob backend: gpiod, or mock:PATH (a script or FIFO of line changes)
+    std::string state_path;  // knob state file; empty: $STATE_DIRECTORY, $XDG_STATE_HOME or ~/.local/state
 };
 
 // Returns the options, or an Error with exit code 2 for bad flags. `--help` and `--version` print and

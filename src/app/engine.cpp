@@ -23,7 +23,8 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
         if (auto context = display.create_worker_context())
             device.start_background_compiles(std::move(context).value());
         else
-            spdlog::warn("{}; looks chosen while running compile on the frame thread", context.error().message);
+            spdlog::warn("{}; looks chosen while running compile on the frame thread",
+                         context.error().message);
     }
     world.insert_resource<params::Params>(params);
     if (auto r = add_display_plugin(world, engine->schedule_); !r) return r.error();
@@ -48,6 +49,8 @@ void Engine::shutdown() {
     schedule_.run_exit(world_);
 }
 
-assets::Image Engine::read_frame() { return read_display(display(), device()); }
+assets::Image Engine::read_frame() {
+    return read_display(display(), device());
+}
 
 }  // namespace puddle::app

@@ -38,7 +38,8 @@ void FrameStats::tick() {
     const auto now = clock::now();
     const double cpu = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID), main_cpu = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
     if (started_)
-        add(std::chrono::duration<double>(now - last_tick_).count(), cpu - last_cpu_s_, main_cpu - last_main_cpu_s_);
+        add(std::chrono::duration<double>(now - last_tick_).count(), cpu - last_cpu_s_,
+            main_cpu - last_main_cpu_s_);
     started_ = true;
     last_tick_ = now;
     last_cpu_s_ = cpu;

@@ -28,8 +28,8 @@ public:
         std::size_t frames = 0;
         double fps = 0;
         double p50_ms = 0, p95_ms = 0, p99_ms = 0, max_ms = 0;
-        double cpu_ms = 0;         // process CPU per frame (every thread; on llvmpipe that includes rendering)
-        double main_cpu_ms = 0;    // the frame loop's own thread per frame
+        double cpu_ms = 0;       // process CPU per frame (every thread; on llvmpipe that includes rendering)
+        double main_cpu_ms = 0;  // the frame loop's own thread per frame
     };
 
     explicit FrameStats(double report_every_s = 5.0);

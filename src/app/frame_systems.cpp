@@ -24,7 +24,9 @@ void capture_system(platform::Display& display, gpu::Device& device, FrameCaptur
     capture.image = read_display(display, device);  // before present: a window or KMS may not keep the frame
 }
 
-void present_system(platform::Display& display, PresentStatus& status) { status.result = display.present(); }
+void present_system(platform::Display& display, PresentStatus& status) {
+    status.result = display.present();
+}
 
 Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule) {
     world.insert_resource<ecs::FrameTime>();

@@ -1,16 +1,15 @@
 #include "app/logging.hpp"
 
+#include <spdlog/pattern_formatter.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/sinks/stdout_sinks.h>
+#include <spdlog/spdlog.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-
-#include <spdlog/pattern_formatter.h>
-#include <spdlog/sinks/stdout_color_sinks.h>
-#include <spdlog/sinks/stdout_sinks.h>
-#include <spdlog/spdlog.h>
 
 namespace puddle::app {
 
@@ -23,12 +22,23 @@ public:
         char prefix[4] = {'<', '6', '>', '\0'};
         switch (msg.level) {
             case spdlog::level::trace:
-            case spdlog::level::debug: prefix[1] = '7'; break;
-            case spdlog::level::info: prefix[1] = '6'; break;
-            case spdlog::level::warn: prefix[1] = '4'; break;
-            case spdlog::level::err: prefix[1] = '3'; break;
-            case spdlog::level::critical: prefix[1] = '2'; break;
-            default: break;
+            case spdlog::level::debug:
+                prefix[1] = '7';
+                break;
+            case spdlog::level::info:
+                prefix[1] = '6';
+                break;
+            case spdlog::level::warn:
+                prefix[1] = '4';
+                break;
+            case spdlog::level::err:
+                prefix[1] = '3';
+                break;
+            case spdlog::level::critical:
+                prefix[1] = '2';
+                break;
+            default:
+                break;
         }
         dest.append(prefix, prefix + 3);
     }
@@ -44,7 +54,8 @@ LogStyle detect_log_style() {
         struct stat st {};
         unsigned long long dev = 0, ino = 0;
         if (std::sscanf(js, "%llu:%llu", &dev, &ino) == 2 && fstat(STDERR_FILENO, &st) == 0 &&
-            static_cast<unsigned long long>(st.st_dev) == dev && static_cast<unsigned long long>(st.st_ino) == ino)
+            static_cast<unsigned long long>(st.st_dev) == dev &&
+            static_cast<unsigned long long>(st.st_ino) == ino)
             return LogStyle::Journal;
     }
     return isatty(STDERR_FILENO) ? LogStyle::Terminal : LogStyle::Plain;

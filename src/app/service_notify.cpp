@@ -1,5 +1,6 @@
 #include "app/service_notify.hpp"
 
+#include <spdlog/spdlog.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -9,8 +10,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <string_view>
-
-#include <spdlog/spdlog.h>
 
 namespace puddle::app {
 
@@ -36,8 +35,9 @@ ServiceNotify ServiceNotify::from_environment() {
         if (error == std::errc() && end == text.data() + text.size() && value > 0)
             n.watchdog_seconds_ = static_cast<double>(value) * 1e-6;
         else
-            spdlog::warn("systemd: WATCHDOG_USEC={} is not a whole number of microseconds above 0; no watchdog pings",
-                         text);
+            spdlog::warn(
+                "systemd: WATCHDOG_USEC={} is not a whole number of microseconds above 0; no watchdog pings",
+                text);
     }
     return n;
 }
@@ -74,6 +74,8 @@ void ServiceNotify::status(std::string_view text) {
     send(m);
 }
 
-void ServiceNotify::stopping() { send("STOPPING=1"); }
+void ServiceNotify::stopping() {
+    send("STOPPING=1");
+}
 
 }  // namespace puddle::app

@@ -10,10 +10,12 @@ void watchdog_ping_system(ServiceNotify& service, const PresentStatus& presented
     if (presented.result) service.frame_presented(systems::monotonic_seconds());
 }
 
-void service_stopping_system(ServiceNotify& service) { service.stopping(); }
+void service_stopping_system(ServiceNotify& service) {
+    service.stopping();
+}
 
-Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule, std::unique_ptr<StopSignals> signals,
-                                ServiceNotify service) {
+Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule,
+                                std::unique_ptr<StopSignals> signals, ServiceNotify service) {
     world.adopt_resource<StopSignals>(std::move(signals));
     world.insert_resource<ServiceNotify>(std::move(service));
     using ecs::Stage;

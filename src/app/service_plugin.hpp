@@ -25,7 +25,7 @@ void service_stopping_system(ServiceNotify& service);
 
 // Inserts `signals` and `service` as resources and registers the systems above. Live tuning
 // (systems::add_live_tuning) must be installed too: the reload signal goes to it.
-Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule, std::unique_ptr<StopSignals> signals,
-                                ServiceNotify service);
+Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule,
+                                std::unique_ptr<StopSignals> signals, ServiceNotify service);
 
 }  // namespace puddle::app

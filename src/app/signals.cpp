@@ -23,8 +23,10 @@ StopSignals::~StopSignals() {
 bool StopSignals::requested() {
     signalfd_siginfo info{};
     while (!last_ && fd_ && read(fd_.get(), &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
-        if (info.ssi_signo == SIGHUP) reload_ = true;
-        else last_ = static_cast<int>(info.ssi_signo);
+        if (info.ssi_signo == SIGHUP)
+            reload_ = true;
+        else
+            last_ = static_cast<int>(info.ssi_signo);
     }
     return last_ != 0;
 }

@@ -56,8 +56,8 @@ Image halve(const Image& image) {
                 const int x0 = std::min(2 * x, image.width - 1), x1 = std::min(2 * x + 1, image.width - 1);
                 const int y0 = std::min(2 * y, image.height - 1), y1 = std::min(2 * y + 1, image.height - 1);
                 if (image.format == PixelFormat::RGBA8) {
-                    const int sum = image.pixel8(x0, y0)[c] + image.pixel8(x1, y0)[c] + image.pixel8(x0, y1)[c] +
-                                    image.pixel8(x1, y1)[c];
+                    const int sum = image.pixel8(x0, y0)[c] + image.pixel8(x1, y0)[c] +
+                                    image.pixel8(x0, y1)[c] + image.pixel8(x1, y1)[c];
                     out.pixel8(x, y)[c] = static_cast<std::uint8_t>((sum + 2) / 4);
                 } else {
                     out.pixelf(x, y)[c] = 0.25f * (image.pixelf(x0, y0)[c] + image.pixelf(x1, y0)[c] +

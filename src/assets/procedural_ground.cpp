@@ -14,7 +14,9 @@ std::uint64_t hash(std::uint64_t x) {
     x *= 0xc4ceb9fe1a85ec53ull;
     return x ^ (x >> 33);
 }
-float unit(std::uint64_t h) { return static_cast<float>(h >> 40) / static_cast<float>(1u << 24); }
+float unit(std::uint64_t h) {
+    return static_cast<float>(h >> 40) / static_cast<float>(1u << 24);
+}
 
 }  // namespace
 
@@ -38,8 +40,10 @@ Image cobblestone_ground(int size, std::uint64_t seed) {
                 for (int i = -1; i <= 1; ++i) {
                     auto [px, py] = cell_point(cx + i, cy + j);
                     const float d = std::hypot(u - px, v - py);
-                    if (d < d1) d2 = d1, d1 = d, best = ((cy + j + cells) % cells) * cells + (cx + i + cells) % cells;
-                    else if (d < d2) d2 = d;
+                    if (d < d1)
+                        d2 = d1, d1 = d, best = ((cy + j + cells) % cells) * cells + (cx + i + cells) % cells;
+                    else if (d < d2)
+                        d2 = d;
                 }
             // Distance to the border between the two nearest cells: small in the joints.
             const float edge = std::clamp((d2 - d1) * 4.0f, 0.0f, 1.0f);

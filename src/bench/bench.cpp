@@ -23,6 +23,7 @@
 // without it a pass would look as cheap as its API calls.
 
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -34,22 +35,20 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "bench/bench_baseline.hpp"
 #include "app/engine.hpp"
-#include "systems/puddle_plugin.hpp"
+#include "assets/procedural.hpp"
+#include "bench/bench_baseline.hpp"
+#include "bench/shader_cost.hpp"
 #include "camera/mjpeg_decoder.hpp"
 #include "camera/mjpeg_encoder.hpp"
-#include "systems/camera_environment.hpp"
-#include "assets/procedural.hpp"
-#include "bench/shader_cost.hpp"
 #include "gpu/shader_source.hpp"
 #include "params/config_loader.hpp"
 #include "systems/analytic_ripple_system.hpp"
+#include "systems/camera_environment.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/grid_drop_system.hpp"
+#include "systems/puddle_plugin.hpp"
 #include "systems/render_system.hpp"
 #include "systems/scene_select.hpp"
 #include "systems/surface_system.hpp"
@@ -75,7 +74,9 @@ struct Bench {
 std::unique_ptr<Bench> current;  // one at a time: each engine owns an EGL context that it makes current
 std::string renderer = "(no engine was made)";
 
-std::string size_name(glm::ivec2 s) { return fmt::format("{}x{}", s.x, s.y); }
+std::string size_name(glm::ivec2 s) {
+    return fmt::format("{}x{}", s.x, s.y);
+}
 
 Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
     platform::DisplayOptions display;
@@ -89,8 +90,10 @@ Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
     gpu::Device& device = b->engine->device();
     renderer = fmt::format("{} ({})", device.caps().renderer, device.caps().version);
 
-    auto floor = device.create_pipeline(
-        {.label = "bench floor", .vertex = "fullscreen.vert", .fragment = "floor.frag", .textures = {"u_source"}});
+    auto floor = device.create_pipeline({.label = "bench floor",
+                                         .vertex = "fullscreen.vert",
+                                         .fragment = "floor.frag",
+                                         .textures = {"u_source"}});
     if (!floor) return floor.error();
     b->floor = std::move(floor).value();
     auto source = device.create_texture({.label = "bench source", .width = size.x, .height = size.y});
@@ -210,7 +213,9 @@ struct CameraBench {
 
 std::unique_ptr<CameraBench> camera_current;  // lives with `current`, released before it
 
-void release_camera_bench() { camera_current.reset(); }
+void release_camera_bench() {
+    camera_current.reset();
+}
 
 CameraBench* camera_bench(benchmark::State& state) {
     Bench* b = bench_for(sizes[0], state);
@@ -225,8 +230,12 @@ CameraBench* camera_bench(benchmark::State& state) {
     const int stride = camera_size.x * 2 + 64;
     cb->yuyv.assign(static_cast<std::size_t>(stride) * camera_size.y, std::byte{128});
     for (std::size_t i = 0; i < cb->yuyv.size(); i += 7) cb->yuyv[i] = std::byte(i & 0xff);
-    cb->image = {.layout = camera::PixelLayout::Yuyv, .width = camera_size.x, .height = camera_size.y,
-                 .stride = stride, .data = cb->yuyv, .matrix = camera::YuvMatrix::Bt709};
+    cb->image = {.layout = camera::PixelLayout::Yuyv,
+                 .width = camera_size.x,
+                 .height = camera_size.y,
+                 .stride = stride,
+                 .data = cb->yuyv,
+                 .matrix = camera::YuvMatrix::Bt709};
     return cb;
 }
 
@@ -245,7 +254,8 @@ void bench_camera_gpu(benchmark::State& state) {
     (void)systems::upload_camera_frame(device, cb->image, cb->env);
     measure(state, device, [&] {
         cb->env.convert_due = true;  // as after each new frame
-        systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(), cb->env);
+        systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(),
+                                           cb->env);
     });
 }
 
@@ -265,7 +275,8 @@ void bench_camera_external(benchmark::State& state) {
         return;
     }
     gpu::Texture source = std::move(made).value();
-    source.upload(std::vector<std::byte>(static_cast<std::size_t>(camera_size.x) * camera_size.y * 4, std::byte{90}));
+    source.upload(
+        std::vector<std::byte>(static_cast<std::size_t>(camera_size.x) * camera_size.y * 4, std::byte{90}));
     auto image = device.create_external_image({.label = "bench camera image", .source = &source});
     if (!image) {
         state.SkipWithError(image.error().message.c_str());
@@ -275,7 +286,8 @@ void bench_camera_external(benchmark::State& state) {
     measure(state, device, [&] {
         cb->env.pending_import = &*image;
         cb->env.convert_due = true;
-        systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(), cb->env);
+        systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(),
+                                           cb->env);
     });
     cb->env.pending_import = nullptr;
 }
@@ -329,14 +341,15 @@ constexpr glm::ivec2 look_size{1920, 1080};
 
 void apply(Params& params, const std::vector<std::string>& sets) {
     for (const std::string& s : sets)
-        if (auto a = params::parse_assignment(s)) params.set(a->id, a->value, params::ParamSource::CommandLine);
+        if (auto a = params::parse_assignment(s))
+            params.set(a->id, a->value, params::ParamSource::CommandLine);
 }
 
 void restore_default_look(Params& params) {
     const Params defaults;
-    for (ParamId id : {ParamId::scene_kind, ParamId::drops_model, ParamId::overlay_rain, ParamId::grid_drops_per_second,
-                       ParamId::analytic_sources, ParamId::render_scale, ParamId::ground_checkerboard,
-                       ParamId::render_method})
+    for (ParamId id : {ParamId::scene_kind, ParamId::drops_model, ParamId::overlay_rain,
+                       ParamId::grid_drops_per_second, ParamId::analytic_sources, ParamId::render_scale,
+                       ParamId::ground_checkerboard, ParamId::render_method})
         params.set(id, defaults.at(id), params::ParamSource::CommandLine);
 }
 
@@ -365,7 +378,8 @@ void bench_drop_pass(benchmark::State& state, const Look& look) {
     auto& surface = w.resource<systems::Surface>();
     measure(state, device, [&] {
         if (systems::selected_drop_model(params) == systems::DropModel::analytic)
-            systems::analytic_ripple_system(device, params, clock, w.resource<systems::AnalyticRipples>(), surface);
+            systems::analytic_ripple_system(device, params, clock, w.resource<systems::AnalyticRipples>(),
+                                            surface);
         else if (systems::selected_drop_model(params) == systems::DropModel::grid)
             systems::grid_drop_system(device, params, clock, w.resource<systems::GridDrops>(), surface);
     });
@@ -421,7 +435,8 @@ std::string load_average() {
 
 std::string cell(std::optional<double> ms, std::optional<double> base) {
     if (!ms) return fmt::format("{:>20}", "-");
-    return base ? fmt::format("{:>10.2f} {:>8.2f}x", *ms, *ms / *base) : fmt::format("{:>10.2f} {:>9}", *ms, "-");
+    return base ? fmt::format("{:>10.2f} {:>8.2f}x", *ms, *ms / *base)
+                : fmt::format("{:>10.2f} {:>9}", *ms, "-");
 }
 
 void print_summary(const Collector& c) {
@@ -429,23 +444,26 @@ void print_summary(const Collector& c) {
                 renderer.c_str(), cpu_model().c_str(), load_average().c_str(), "");
     for (glm::ivec2 s : sizes) std::printf("%20s", size_name(s).c_str());
     const std::string wave = fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>());
-    for (const std::string& key : {std::string("floor"), wave, std::string("surface"), std::string("render/intersect"),
-                                   std::string("render/raymarch"), std::string("frame/intersect"),
-                                   std::string("frame/raymarch")}) {
+    for (const std::string& key :
+         {std::string("floor"), wave, std::string("surface"), std::string("render/intersect"),
+          std::string("render/raymarch"), std::string("frame/intersect"), std::string("frame/raymarch")}) {
         std::printf("\n%-20s", (key == wave ? key + " field" : key).c_str());
         for (glm::ivec2 s : sizes)  // the wave step is measured once, and set against each size's floor
-            std::printf("%s", cell(c.ms(key == wave ? wave : key + "/" + size_name(s)),
-                                   c.ms("floor/" + size_name(s))).c_str());
+            std::printf(
+                "%s", cell(c.ms(key == wave ? wave : key + "/" + size_name(s)), c.ms("floor/" + size_name(s)))
+                          .c_str());
     }
     for (const char* stage : {"render", "frame"}) {
         std::printf("\n%-20s", fmt::format("{} rm/int", stage).c_str());
         for (glm::ivec2 s : sizes) {
             const auto rm = c.ms(fmt::format("{}/raymarch/{}", stage, size_name(s)));
             const auto in = c.ms(fmt::format("{}/intersect/{}", stage, size_name(s)));
-            std::printf("%s", (rm && in ? fmt::format("{:>19.2f}x", *rm / *in) : fmt::format("{:>20}", "-")).c_str());
+            std::printf(
+                "%s", (rm && in ? fmt::format("{:>19.2f}x", *rm / *in) : fmt::format("{:>20}", "-")).c_str());
         }
     }
-    std::printf("\n\nLooks at %s, ms per frame (x puddle_pulse); drop passes, ms\n", size_name(look_size).c_str());
+    std::printf("\n\nLooks at %s, ms per frame (x puddle_pulse); drop passes, ms\n",
+                size_name(look_size).c_str());
     const auto pulse = c.ms("look/puddle_pulse");
     for (const Look& look : looks()) {
         std::printf("%-20s%s", look.name, cell(c.ms(fmt::format("look/{}", look.name)), pulse).c_str());
@@ -466,7 +484,8 @@ void print_camera_summary(const Collector& c) {
     for (const char* key : {"camera/cpu_copy_yuyv", "camera/cpu_decode_mjpeg", "camera/gpu_convert_and_cube",
                             "camera/gpu_external_sampler"}) {
         const auto ms = c.ms(key);
-        std::printf("%-30s%s\n", key, ms ? fmt::format("{:>10.2f}", *ms).c_str() : fmt::format("{:>10}", "-").c_str());
+        std::printf("%-30s%s\n", key,
+                    ms ? fmt::format("{:>10.2f}", *ms).c_str() : fmt::format("{:>10}", "-").c_str());
     }
 }
 
@@ -488,7 +507,8 @@ Figures figures(const Collector& c) {
             for (const char* m : methods)
                 if (const auto ms = c.ms(fmt::format("{}/{}/{}", stage, m, size_name(s))); ms && floor)
                     f[fmt::format("{}/{}/{} x floor", stage, m, size_name(s))] = *ms / *floor;
-        const auto rm = c.ms("render/raymarch/" + size_name(s)), in = c.ms("render/intersect/" + size_name(s));
+        const auto rm = c.ms("render/raymarch/" + size_name(s)),
+                   in = c.ms("render/intersect/" + size_name(s));
         if (rm && in) f[fmt::format("render/intersect/{} x raymarch", size_name(s))] = *in / *rm;
     }
     for (const char* m : methods) {
@@ -501,10 +521,12 @@ Figures figures(const Collector& c) {
 
 // Prints the shader cost, then each figure beside its baseline; true when a shader cost regressed.
 bool print_against_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
-    std::printf("\nRender shader, estimated per pixel (longest path, from the source; bench/shader_cost.hpp)\n");
+    std::printf(
+        "\nRender shader, estimated per pixel (longest path, from the source; bench/shader_cost.hpp)\n");
     for (const char* m : methods)
         std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n", m,
-                    now.at(fmt::format("shader/{} texture fetches", m)), now.at(fmt::format("shader/{} alu ops", m)));
+                    now.at(fmt::format("shader/{} texture fetches", m)),
+                    now.at(fmt::format("shader/{} alu ops", m)));
     return check_baseline(now, baseline, path);
 }
 
@@ -535,7 +557,8 @@ void register_all() {
     for (const Look& look : looks()) {
         add(fmt::format("look/{}", look.name), [&look](benchmark::State& st) { bench_look(st, look); });
         if (look.sets.size() > 1 && look.sets[0].starts_with("drops."))
-            add(fmt::format("drop_pass/{}", look.name), [&look](benchmark::State& st) { bench_drop_pass(st, look); });
+            add(fmt::format("drop_pass/{}", look.name),
+                [&look](benchmark::State& st) { bench_drop_pass(st, look); });
     }
 }
 
@@ -577,8 +600,10 @@ int main(int argc, char** argv) {
     const Figures now = figures(collector);
     const bool regressed = print_against_baseline(now, read_baseline(baseline_path), baseline_path);
     if (update_baseline) {
-        if (!write_baseline(baseline_path, now)) std::fprintf(stderr, "puddle-bench: cannot write %s\n", baseline_path.c_str());
-        else std::printf("\nBaseline written: %s\n", baseline_path.c_str());
+        if (!write_baseline(baseline_path, now))
+            std::fprintf(stderr, "puddle-bench: cannot write %s\n", baseline_path.c_str());
+        else
+            std::printf("\nBaseline written: %s\n", baseline_path.c_str());
     }
     benchmark::Shutdown();
     return regressed && !update_baseline ? 1 : 0;

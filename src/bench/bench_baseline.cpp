@@ -1,11 +1,11 @@
 #include "bench/bench_baseline.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <fstream>
 #include <regex>
 #include <sstream>
-
-#include <fmt/format.h>
 
 namespace puddle::bench {
 
@@ -31,7 +31,8 @@ Figures read_baseline(const std::string& path) {
 bool write_baseline(const std::string& path, Figures f) {
     for (const auto& [name, value] : read_baseline(path)) f.emplace(name, value);  // keeps what was not run
     std::ofstream out(path);
-    out << "{\n  \"_about\": \"puddle-bench --update-baseline: ratios to the floor pass (or to raymarch) and the "
+    out << "{\n  \"_about\": \"puddle-bench --update-baseline: ratios to the floor pass (or to raymarch) and "
+           "the "
            "render shader's estimated cost; lower is better\",\n";
     std::size_t k = 0;
     for (const auto& [name, value] : f)
@@ -54,7 +55,9 @@ bool check_baseline(const Figures& now, const Figures& baseline, const std::stri
         const bool bad = exact ? value > base->second + 0.5 : value > base->second * ratio_tolerance;
         regressed = regressed || (bad && exact);  // timings only warn: one noisy run must not fail a build
         std::printf("  %-36s %9.2f  baseline %9.2f  %s\n", name.c_str(), value, base->second,
-                    bad ? "REGRESSION" : value < base->second / ratio_tolerance ? "better" : "ok");
+                    bad                                      ? "REGRESSION"
+                    : value < base->second / ratio_tolerance ? "better"
+                                                             : "ok");
     }
     return regressed;
 }

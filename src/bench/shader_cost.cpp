@@ -65,7 +65,8 @@ std::string preprocess(std::string_view source) {
 }
 
 std::vector<std::string> tokenize(const std::string& text) {
-    static const std::vector<std::string> pairs{"+=", "-=", "*=", "/=", "<=", ">=", "==", "!=", "&&", "||", "++", "--"};
+    static const std::vector<std::string> pairs{
+        "+=", "-=", "*=", "/=", "<=", ">=", "==", "!=", "&&", "||", "++", "--"};
     std::vector<std::string> tokens;
     for (std::size_t i = 0; i < text.size();) {
         const char c = text[i];
@@ -73,19 +74,23 @@ std::vector<std::string> tokenize(const std::string& text) {
             ++i;
         } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
             std::size_t j = i;
-            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_'))
+                ++j;
             tokens.push_back(text.substr(i, j - i));
             i = j;
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                   (c == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
+                   (c == '.' && i + 1 < text.size() &&
+                    std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
             std::size_t j = i;
-            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '.' ||
-                                       ((text[j] == '-' || text[j] == '+') && (text[j - 1] == 'e' || text[j - 1] == 'E'))))
+            while (j < text.size() &&
+                   (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '.' ||
+                    ((text[j] == '-' || text[j] == '+') && (text[j - 1] == 'e' || text[j - 1] == 'E'))))
                 ++j;
             tokens.push_back(text.substr(i, j - i));
             i = j;
         } else {
-            const auto pair = std::find_if(pairs.begin(), pairs.end(), [&](const std::string& p) { return text.compare(i, 2, p) == 0; });
+            const auto pair = std::find_if(pairs.begin(), pairs.end(),
+                                           [&](const std::string& p) { return text.compare(i, 2, p) == 0; });
             tokens.push_back(pair != pairs.end() ? *pair : std::string(1, c));
             i += tokens.back().size();
         }
@@ -96,14 +101,14 @@ std::vector<std::string> tokenize(const std::string& text) {
 // ALU weight of a built-in function; absent names (constructors, user functions) weigh nothing here.
 int builtin_weight(const std::string& name) {
     static const std::map<std::string, int> weights{
-        {"abs", 1},       {"sign", 1},      {"floor", 1},      {"ceil", 1},        {"fract", 1},
-        {"min", 1},       {"max", 1},       {"clamp", 2},      {"step", 1},        {"mod", 2},
-        {"mix", 2},       {"dot", 1},       {"sqrt", 1},       {"inversesqrt", 1}, {"exp", 2},
-        {"exp2", 1},      {"log", 2},       {"log2", 1},       {"pow", 3},         {"sin", 1},
-        {"cos", 1},       {"tan", 2},       {"atan", 4},       {"asin", 4},        {"acos", 4},
-        {"length", 2},    {"distance", 3},  {"normalize", 3},  {"cross", 2},       {"reflect", 3},
-        {"refract", 6},   {"smoothstep", 4}, {"any", 1},       {"all", 1},         {"greaterThan", 1},
-        {"lessThan", 1},  {"equal", 1},     {"notEqual", 1},   {"dFdx", 1},        {"dFdy", 1},
+        {"abs", 1},      {"sign", 1},       {"floor", 1},     {"ceil", 1},        {"fract", 1},
+        {"min", 1},      {"max", 1},        {"clamp", 2},     {"step", 1},        {"mod", 2},
+        {"mix", 2},      {"dot", 1},        {"sqrt", 1},      {"inversesqrt", 1}, {"exp", 2},
+        {"exp2", 1},     {"log", 2},        {"log2", 1},      {"pow", 3},         {"sin", 1},
+        {"cos", 1},      {"tan", 2},        {"atan", 4},      {"asin", 4},        {"acos", 4},
+        {"length", 2},   {"distance", 3},   {"normalize", 3}, {"cross", 2},       {"reflect", 3},
+        {"refract", 6},  {"smoothstep", 4}, {"any", 1},       {"all", 1},         {"greaterThan", 1},
+        {"lessThan", 1}, {"equal", 1},      {"notEqual", 1},  {"dFdx", 1},        {"dFdy", 1},
         {"fwidth", 2},
     };
     const auto it = weights.find(name);
@@ -112,12 +117,13 @@ int builtin_weight(const std::string& name) {
 
 bool is_fetch(const std::string& name) {
     return name == "texture" || name == "textureLod" || name == "texelFetch" || name == "textureGrad" ||
-           name == "textureOffset" || name == "textureProj" || name == "textureLodOffset" || name == "texelFetchOffset";
+           name == "textureOffset" || name == "textureProj" || name == "textureLodOffset" ||
+           name == "texelFetchOffset";
 }
 
 bool is_op(const std::string& t) {
-    static const std::set<std::string> ops{"+", "-", "*", "/", "+=", "-=", "*=", "/=", "<", ">", "<=",
-                                           ">=", "==", "!=", "&&", "||", "?", "!"};
+    static const std::set<std::string> ops{"+", "-",  "*",  "/",  "+=", "-=", "*=", "/=", "<",
+                                           ">", "<=", ">=", "==", "!=", "&&", "||", "?",  "!"};
     return ops.contains(t);
 }
 
@@ -148,7 +154,9 @@ public:
     }
 
 private:
-    static bool is_name(const std::string& s) { return !s.empty() && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_'); }
+    static bool is_name(const std::string& s) {
+        return !s.empty() && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_');
+    }
 
     // The index of the bracket closing the one at `open`.
     std::size_t match(std::size_t open) const {

@@ -4,11 +4,16 @@ namespace puddle::ecs {
 
 std::string_view stage_name(Stage s) {
     switch (s) {
-        case Stage::Input: return "input";
-        case Stage::Simulate: return "simulate";
-        case Stage::Render: return "render";
-        case Stage::Present: return "present";
-        case Stage::Exit: return "exit";
+        case Stage::Input:
+            return "input";
+        case Stage::Simulate:
+            return "simulate";
+        case Stage::Render:
+            return "render";
+        case Stage::Present:
+            return "present";
+        case Stage::Exit:
+            return "exit";
     }
     return "?";
 }
@@ -27,7 +32,8 @@ void Schedule::Entry::run(World& world) {
 
 std::string Schedule::Entry::describe(Stage stage) const {
     std::string line = std::string(stage_name(stage)) + "/" + name_;
-    for (std::size_t i = 0; i < conditions_.size(); ++i) line += (i == 0 ? " if " : " and ") + conditions_[i].name;
+    for (std::size_t i = 0; i < conditions_.size(); ++i)
+        line += (i == 0 ? " if " : " and ") + conditions_[i].name;
     auto join = [](const std::vector<std::string>& names) {
         std::string out;
         for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
@@ -57,7 +63,9 @@ void Schedule::run_frame(World& world) {
     run_stage(Stage::Present, world);
 }
 
-void Schedule::run_exit(World& world) { run_stage(Stage::Exit, world); }
+void Schedule::run_exit(World& world) {
+    run_stage(Stage::Exit, world);
+}
 
 std::vector<std::string> Schedule::describe() const {
     std::vector<std::string> out;

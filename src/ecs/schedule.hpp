@@ -18,7 +18,8 @@
 namespace puddle::ecs {
 
 enum class Stage { Input, Simulate, Render, Present, Exit };
-inline constexpr std::array all_stages{Stage::Input, Stage::Simulate, Stage::Render, Stage::Present, Stage::Exit};
+inline constexpr std::array all_stages{Stage::Input, Stage::Simulate, Stage::Render, Stage::Present,
+                                       Stage::Exit};
 std::string_view stage_name(Stage s);
 
 using System = std::function<void(World&)>;
@@ -38,8 +39,8 @@ public:
     // Registers a plain function whose parameters are fetched from the World by type.
     template <class Result, class... Params>
     Entry& add(Stage stage, std::string name, Result (*fn)(Params...)) {
-        return add_entry(stage, std::move(name),
-                         [fn](World& w) { call_with_resources(fn, w); }, access_of(fn));
+        return add_entry(
+            stage, std::move(name), [fn](World& w) { call_with_resources(fn, w); }, access_of(fn));
     }
     // Registers a closure over the World (tests, and systems that need state of their own).
     Entry& add_system(Stage stage, std::string name, System system) {

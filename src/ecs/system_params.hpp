@@ -26,8 +26,8 @@ namespace puddle::ecs {
 template <class T>
 std::string type_name() {
     int status = 0;
-    std::unique_ptr<char, void (*)(void*)> demangled(abi::__cxa_demangle(typeid(T).name(), nullptr, nullptr, &status),
-                                                     std::free);
+    std::unique_ptr<char, void (*)(void*)> demangled(
+        abi::__cxa_demangle(typeid(T).name(), nullptr, nullptr, &status), std::free);
     std::string name = status == 0 && demangled ? demangled.get() : typeid(T).name();
     // Drop the namespaces; template arguments keep theirs, which is fine for a log line.
     const auto template_start = name.find('<');

@@ -7,7 +7,9 @@
 namespace puddle::gpu {
 
 namespace detail {
-void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+void delete_buffer(GLuint id) {
+    glDeleteBuffers(1, &id);
+}
 }  // namespace detail
 
 void Buffer::write(std::span<const std::byte> data, std::size_t offset) {

@@ -1,8 +1,8 @@
 #include "gpu/capabilities.hpp"
 
-#include <cstring>
-
 #include <fmt/format.h>
+
+#include <cstring>
 
 #include "gpu/gl.hpp"
 
@@ -38,7 +38,8 @@ Capabilities probe_capabilities(bool forbid_float_targets) {
     GLint n = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &n);
     for (GLint i = 0; i < n; ++i) {
-        if (const auto* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)))) {
+        if (const auto* e =
+                reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)))) {
             if (!c.extensions.empty()) c.extensions += ' ';
             c.extensions += e;
         }
@@ -60,10 +61,11 @@ Capabilities probe_capabilities(bool forbid_float_targets) {
 
 std::string Capabilities::summary() const {
     auto yn = [](bool b) { return b ? "yes" : "no"; };
-    return fmt::format("{} / {} / {}; float targets {}, half-float targets {}, float filtering {}, "
-                       "timer queries {}, external images {}",
-                       vendor, renderer, version, yn(float_render_targets), yn(half_float_render_targets),
-                       yn(float_linear_filtering), yn(timer_queries), yn(external_images));
+    return fmt::format(
+        "{} / {} / {}; float targets {}, half-float targets {}, float filtering {}, "
+        "timer queries {}, external images {}",
+        vendor, renderer, version, yn(float_render_targets), yn(half_float_render_targets),
+        yn(float_linear_filtering), yn(timer_queries), yn(external_images));
 }
 
 }  // namespace puddle::gpu

@@ -9,7 +9,7 @@ namespace puddle::gpu {
 struct Capabilities {
     std::string vendor, renderer, version, glsl_version;
     int major = 3, minor = 0;
-    bool float_render_targets = false;       // RG32F/RGBA32F/RGBA16F colour attachments (EXT_color_buffer_float)
+    bool float_render_targets = false;  // RG32F/RGBA32F/RGBA16F colour attachments (EXT_color_buffer_float)
     bool half_float_render_targets = false;  // RGBA16F colour attachments (EXT_color_buffer_half_float too)
     bool float_linear_filtering = false;     // GL_LINEAR on 32-bit float textures (OES_texture_float_linear)
     bool srgb_textures = true;               // core in GLES 3.0

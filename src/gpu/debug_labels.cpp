@@ -11,11 +11,13 @@ void DebugLabels::load() {
 }
 
 void DebugLabels::label(GLenum type, GLuint id, std::string_view text) const {
-    if (object_label_ && !text.empty()) object_label_(type, id, static_cast<GLsizei>(text.size()), text.data());
+    if (object_label_ && !text.empty())
+        object_label_(type, id, static_cast<GLsizei>(text.size()), text.data());
 }
 
 void DebugLabels::push_group(std::string_view text) const {
-    if (push_group_) push_group_(GL_DEBUG_SOURCE_APPLICATION_KHR, 0, static_cast<GLsizei>(text.size()), text.data());
+    if (push_group_)
+        push_group_(GL_DEBUG_SOURCE_APPLICATION_KHR, 0, static_cast<GLsizei>(text.size()), text.data());
 }
 
 void DebugLabels::pop_group() const {

@@ -5,8 +5,7 @@
 
 #include <string_view>
 
-#include <GLES3/gl3.h>
-#include <GLES2/gl2ext.h>
+#include "gpu/gl.hpp"
 
 namespace puddle::gpu {
 

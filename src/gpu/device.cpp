@@ -13,16 +13,21 @@
 namespace puddle::gpu {
 
 namespace detail {
-void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+void delete_vertex_array(GLuint id) {
+    glDeleteVertexArrays(1, &id);
+}
 }  // namespace detail
 
 namespace {
 
 GLint gl_wrap(Wrap w) {
     switch (w) {
-        case Wrap::Clamp: return GL_CLAMP_TO_EDGE;
-        case Wrap::Repeat: return GL_REPEAT;
-        case Wrap::Mirror: return GL_MIRRORED_REPEAT;
+        case Wrap::Clamp:
+            return GL_CLAMP_TO_EDGE;
+        case Wrap::Repeat:
+            return GL_REPEAT;
+        case Wrap::Mirror:
+            return GL_MIRRORED_REPEAT;
     }
     return GL_CLAMP_TO_EDGE;
 }
@@ -53,12 +58,14 @@ Result<Texture> Device::create_texture(const TextureDesc& desc) {
     const GLenum target = cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
     (void)take_gl_error();  // an earlier call's error is not this texture's
     glBindTexture(target, id);
-    glTexStorage2D(target, std::max(1, desc.mip_levels), gl_format(desc.format).internal, desc.width, desc.height);
+    glTexStorage2D(target, std::max(1, desc.mip_levels), gl_format(desc.format).internal, desc.width,
+                   desc.height);
     if (const GLenum e = take_gl_error(); e != GL_NO_ERROR)
         return make_error(exit_code_for(e), "gpu: texture '{}' ({}): glTexStorage2D: {}", desc.label,
                           describe_storage(desc), gl_error_name(e));
     // Integer and unfilterable float textures are incomplete with the default mipmap filter.
-    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, desc.mip_levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER,
+                    desc.mip_levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, std::max(0, desc.mip_levels - 1));
     labels_.label(GL_TEXTURE, id, desc.label);
@@ -88,7 +95,8 @@ Sampler Device::create_sampler(const SamplerDesc& desc) {
     glSamplerParameteri(id, GL_TEXTURE_WRAP_T, gl_wrap(desc.wrap));
     glSamplerParameteri(id, GL_TEXTURE_WRAP_R, gl_wrap(desc.wrap));
     if (caps_.anisotropic_filtering && desc.anisotropy > 1.0f)
-        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(desc.anisotropy, caps_.max_anisotropy));
+        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT,
+                            std::min(desc.anisotropy, caps_.max_anisotropy));
     labels_.label(GL_SAMPLER, id, desc.label);
     return s;
 }
@@ -176,11 +184,14 @@ Result<Pipeline> Device::adopt_program(const PipelineDesc& desc, GlHandle<detail
     return p;
 }
 
-RenderPass Device::begin_pass(const RenderPassDesc& desc) { return RenderPass(desc, labels_); }
+RenderPass Device::begin_pass(const RenderPassDesc& desc) {
+    return RenderPass(desc, labels_);
+}
 
 void Device::read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba) {
     const int w = target.size.x, h = target.size.y;
-    glBindFramebuffer(GL_FRAMEBUFFER, target.texture ? target.texture->framebuffer(target.face, target.level) : 0);
+    glBindFramebuffer(GL_FRAMEBUFFER,
+                      target.texture ? target.texture->framebuffer(target.face, target.level) : 0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     // GL's row 0 is the bottom of the picture; files start at the top.
@@ -211,7 +222,9 @@ std::vector<float> Device::read_texture(const Texture& texture, int face) {
     return out;
 }
 
-void Device::finish() { glFinish(); }
+void Device::finish() {
+    glFinish();
+}
 
 std::string Device::take_errors() {
     std::string names;

@@ -38,8 +38,8 @@ void delete_vertex_array(GLuint id);
 
 // A pipeline being built for the frame loop (Device::request_pipeline); empty when none is.
 struct PipelineRequest {
-    std::shared_ptr<CompileJob> job;             // linking on the compiler's worker
-    std::optional<Result<Pipeline>> built_now;   // no worker: built at request time
+    std::shared_ptr<CompileJob> job;            // linking on the compiler's worker
+    std::optional<Result<Pipeline>> built_now;  // no worker: built at request time
     bool active() const { return job || built_now; }
 };
 

@@ -116,23 +116,23 @@ Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& des
                          reinterpret_cast<EGLClientBuffer>(static_cast<std::uintptr_t>(desc.source->id())),
                          attribs);
     } else {
-        std::vector<EGLint> a = {EGL_WIDTH,
-                                 desc.width,
-                                 EGL_HEIGHT,
-                                 desc.height,
-                                 EGL_LINUX_DRM_FOURCC_EXT,
-                                 static_cast<EGLint>(desc.format == DmabufFormat::Nv12 ? DRM_FORMAT_NV12
-                                                                                       : DRM_FORMAT_YUYV),
-                                 EGL_YUV_COLOR_SPACE_HINT_EXT,
-                                 desc.bt709 ? EGL_ITU_REC709_EXT : EGL_ITU_REC601_EXT,
-                                 EGL_SAMPLE_RANGE_HINT_EXT,
-                                 desc.full_range ? EGL_YUV_FULL_RANGE_EXT : EGL_YUV_NARROW_RANGE_EXT,
-                                 EGL_DMA_BUF_PLANE0_FD_EXT,
-                                 desc.planes[0].fd,
-                                 EGL_DMA_BUF_PLANE0_OFFSET_EXT,
-                                 static_cast<EGLint>(desc.planes[0].offset),
-                                 EGL_DMA_BUF_PLANE0_PITCH_EXT,
-                                 static_cast<EGLint>(desc.planes[0].pitch)};
+        std::vector<EGLint> a = {
+            EGL_WIDTH,
+            desc.width,
+            EGL_HEIGHT,
+            desc.height,
+            EGL_LINUX_DRM_FOURCC_EXT,
+            static_cast<EGLint>(desc.format == DmabufFormat::Nv12 ? DRM_FORMAT_NV12 : DRM_FORMAT_YUYV),
+            EGL_YUV_COLOR_SPACE_HINT_EXT,
+            desc.bt709 ? EGL_ITU_REC709_EXT : EGL_ITU_REC601_EXT,
+            EGL_SAMPLE_RANGE_HINT_EXT,
+            desc.full_range ? EGL_YUV_FULL_RANGE_EXT : EGL_YUV_NARROW_RANGE_EXT,
+            EGL_DMA_BUF_PLANE0_FD_EXT,
+            desc.planes[0].fd,
+            EGL_DMA_BUF_PLANE0_OFFSET_EXT,
+            static_cast<EGLint>(desc.planes[0].offset),
+            EGL_DMA_BUF_PLANE0_PITCH_EXT,
+            static_cast<EGLint>(desc.planes[0].pitch)};
         if (desc.planes[1].fd >= 0) {
             a.insert(a.end(), {EGL_DMA_BUF_PLANE1_FD_EXT, desc.planes[1].fd, EGL_DMA_BUF_PLANE1_OFFSET_EXT,
                                static_cast<EGLint>(desc.planes[1].offset), EGL_DMA_BUF_PLANE1_PITCH_EXT,

@@ -1,9 +1,9 @@
 #pragma once
 // A move-only owner of one GL object name; Deleter is called with the name when it dies.
 
-#include <GLES3/gl3.h>
-
 #include <utility>
+
+#include "gpu/gl.hpp"
 
 namespace puddle::gpu {
 

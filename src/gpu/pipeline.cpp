@@ -5,7 +5,9 @@
 namespace puddle::gpu {
 
 namespace detail {
-void delete_program(GLuint id) { glDeleteProgram(id); }
+void delete_program(GLuint id) {
+    glDeleteProgram(id);
+}
 }  // namespace detail
 
 GLint Pipeline::location(std::string_view uniform) const {

@@ -17,7 +17,7 @@ enum class Blend { Replace, Alpha };
 
 struct PipelineDesc {
     std::string label;
-    std::string vertex = "fullscreen.vert";  // file in shaders_gles/
+    std::string vertex = "fullscreen.vert";   // file in shaders_gles/
     std::string fragment;                     // file in shaders_gles/
     std::vector<std::string> defines;         // variants: "METHOD_RAYMARCH", "MAX_DROPS 128"
     std::vector<std::string> textures;        // sampler uniform names; texture unit = position here

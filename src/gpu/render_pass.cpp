@@ -1,7 +1,6 @@
 #include "gpu/render_pass.hpp"
 
 #include <cassert>
-
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/buffer.hpp"
@@ -16,7 +15,9 @@ RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
     : store_(desc.store), labels_(&labels) {
     labels_->push_group(desc.label);
     is_default_framebuffer_ = desc.target.texture == nullptr;
-    glBindFramebuffer(GL_FRAMEBUFFER, is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer(desc.target.face, desc.target.level));
+    glBindFramebuffer(
+        GL_FRAMEBUFFER,
+        is_default_framebuffer_ ? 0 : desc.target.texture->framebuffer(desc.target.face, desc.target.level));
     glViewport(0, 0, desc.target.size.x, desc.target.size.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
@@ -41,7 +42,8 @@ RenderPass& RenderPass::set_pipeline(const Pipeline& pipeline) {
     glUseProgram(pipeline.id());
     if (pipeline.blend() == Blend::Alpha) {
         glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep the target's alpha
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO,
+                            GL_ONE);  // keep the target's alpha
     } else {
         glDisable(GL_BLEND);
     }
@@ -123,7 +125,9 @@ RenderPass& RenderPass::set(std::string_view name, std::span<const glm::vec4> v)
     return *this;
 }
 
-void RenderPass::draw_fullscreen() { glDrawArrays(GL_TRIANGLES, 0, 3); }
+void RenderPass::draw_fullscreen() {
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
 
 void RenderPass::end() {
     if (ended_) return;

@@ -3,14 +3,13 @@
 // glClear; StoreOp::Discard is glInvalidateFramebuffer (cheap on tiled mobile GPUs). Begun by
 // Device::begin_pass; ended by end() or the destructor.
 
-#include <span>
-#include <string_view>
-
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <span>
+#include <string_view>
 
 #include "gpu/frame_target.hpp"
 #include "gpu/pipeline.hpp"

@@ -37,7 +37,8 @@ Result<void> splice(std::string_view name, ShaderLookup lookup, AssembledShader&
             if (q1 == std::string_view::npos || q2 <= q1)
                 return make_error(ExitCode::Runtime, "shader: {}:{}: malformed #include", name, line);
             if (auto r = splice(l.substr(q1 + 1, q2 - q1 - 1), lookup, out, depth + 1); !r)
-                return make_error(ExitCode::Runtime, "{} (included from {}:{})", r.error().message, name, line);
+                return make_error(ExitCode::Runtime, "{} (included from {}:{})", r.error().message, name,
+                                  line);
             out.source += fmt::format("#line {} {}\n", line + 1, file);
             continue;
         }

@@ -10,35 +10,57 @@
 namespace puddle::gpu {
 
 namespace detail {
-void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
-void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
+void delete_texture(GLuint id) {
+    glDeleteTextures(1, &id);
+}
+void delete_framebuffer(GLuint id) {
+    glDeleteFramebuffers(1, &id);
+}
+void delete_sampler(GLuint id) {
+    glDeleteSamplers(1, &id);
+}
 }  // namespace detail
 
 GlFormat gl_format(TextureFormat f) {
     switch (f) {
-        case TextureFormat::RGBA8: return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
-        case TextureFormat::SRGB8_A8: return {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
-        case TextureFormat::RG32F: return {GL_RG32F, GL_RG, GL_FLOAT, 2, 4};
-        case TextureFormat::RG32I: return {GL_RG32I, GL_RG_INTEGER, GL_INT, 2, 4};
-        case TextureFormat::RGBA16F: return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, 4};
-        case TextureFormat::RGBA32F: return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, 4};
-        case TextureFormat::R8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1};
-        case TextureFormat::RG8: return {GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2, 1};
+        case TextureFormat::RGBA8:
+            return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
+        case TextureFormat::SRGB8_A8:
+            return {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
+        case TextureFormat::RG32F:
+            return {GL_RG32F, GL_RG, GL_FLOAT, 2, 4};
+        case TextureFormat::RG32I:
+            return {GL_RG32I, GL_RG_INTEGER, GL_INT, 2, 4};
+        case TextureFormat::RGBA16F:
+            return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, 4};
+        case TextureFormat::RGBA32F:
+            return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, 4};
+        case TextureFormat::R8:
+            return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1};
+        case TextureFormat::RG8:
+            return {GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2, 1};
     }
     return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
 }
 
 const char* format_name(TextureFormat f) {
     switch (f) {
-        case TextureFormat::RGBA8: return "RGBA8";
-        case TextureFormat::SRGB8_A8: return "SRGB8_ALPHA8";
-        case TextureFormat::RG32F: return "RG32F";
-        case TextureFormat::RG32I: return "RG32I";
-        case TextureFormat::RGBA16F: return "RGBA16F";
-        case TextureFormat::RGBA32F: return "RGBA32F";
-        case TextureFormat::R8: return "R8";
-        case TextureFormat::RG8: return "RG8";
+        case TextureFormat::RGBA8:
+            return "RGBA8";
+        case TextureFormat::SRGB8_A8:
+            return "SRGB8_ALPHA8";
+        case TextureFormat::RG32F:
+            return "RG32F";
+        case TextureFormat::RG32I:
+            return "RG32I";
+        case TextureFormat::RGBA16F:
+            return "RGBA16F";
+        case TextureFormat::RGBA32F:
+            return "RGBA32F";
+        case TextureFormat::R8:
+            return "R8";
+        case TextureFormat::RG8:
+            return "RG8";
     }
     return "?";
 }

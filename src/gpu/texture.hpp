@@ -20,8 +20,8 @@ enum class TextureFormat {
     RG32I,     // wave field, fixed point, where float targets are missing
     RGBA16F,   // filterable float: surface (height + normal), HDR colour
     RGBA32F,
-    R8,        // one 8-bit channel: a camera's Y plane
-    RG8,       // two 8-bit channels: a camera's interleaved UV plane
+    R8,   // one 8-bit channel: a camera's Y plane
+    RG8,  // two 8-bit channels: a camera's interleaved UV plane
 };
 // External: a GL_TEXTURE_EXTERNAL_OES over an EGLImage (camera dmabufs), made by create_external_image.
 enum class TextureKind { D2, Cube, External };
@@ -39,7 +39,9 @@ struct TextureDesc {
 
 // Levels of a full mip chain for a largest side of `size` texels: floor(log2(size)) + 1, down to 1x1
 // (GLES 3.2 section 8.14.3, "Mipmapping"); 1 for sizes below 1.
-inline int full_mip_count(int size) { return std::bit_width(static_cast<unsigned>(size < 1 ? 1 : size)); }
+inline int full_mip_count(int size) {
+    return std::bit_width(static_cast<unsigned>(size < 1 ? 1 : size));
+}
 
 // Bytes of GPU storage the texture asks for: every level, every face (the driver may pad).
 std::uint64_t storage_bytes(const TextureDesc& desc);

@@ -1,11 +1,11 @@
 #include "io/gpio_backend.hpp"
 
-#include <cerrno>
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "io/gpio_mock.hpp"
 
@@ -33,27 +33,31 @@ Error gpio_request_error(const LineRequest& r, int err) {
     switch (err) {
         case ENOENT:
         case ENODEV:
-            return make_error(ExitCode::Runtime, "{}: no such chip or line (list them with gpiodetect and gpioinfo)",
-                              where);
+            return make_error(ExitCode::Runtime,
+                              "{}: no such chip or line (list them with gpiodetect and gpioinfo)", where);
         case EACCES:
         case EPERM:
-            return make_error(ExitCode::Runtime,
-                              "{}: permission denied: add the user to group gpio (sudo usermod -aG gpio $USER) and "
-                              "install deploy/99-puddle-gpio.rules",
-                              where);
+            return make_error(
+                ExitCode::Runtime,
+                "{}: permission denied: add the user to group gpio (sudo usermod -aG gpio $USER) and "
+                "install deploy/99-puddle-gpio.rules",
+                where);
         case EBUSY:
-            return make_error(ExitCode::Runtime, "{}: busy: another program holds it (gpioinfo shows the consumer)",
-                              where);
+            return make_error(ExitCode::Runtime,
+                              "{}: busy: another program holds it (gpioinfo shows the consumer)", where);
         case EINVAL:
-            return make_error(ExitCode::Runtime, "{}: the driver refused the settings (bias or edge detection): {}",
-                              where, std::strerror(err));
-        default: return make_error(ExitCode::Runtime, "{}: {}", where, std::strerror(err));
+            return make_error(ExitCode::Runtime,
+                              "{}: the driver refused the settings (bias or edge detection): {}", where,
+                              std::strerror(err));
+        default:
+            return make_error(ExitCode::Runtime, "{}: {}", where, std::strerror(err));
     }
 }
 
 Result<void> check_gpio_spec(std::string_view spec) {
     if (spec.empty() || spec == "gpiod" || spec.starts_with("mock:")) return {};  // "mock:": no script
-    return make_error(ExitCode::Config, "--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO of line changes)",
+    return make_error(ExitCode::Config,
+                      "--gpio {}: expected \"gpiod\" or \"mock:PATH\" (a script or FIFO of line changes)",
                       spec);
 }
 

@@ -3,8 +3,8 @@
 #include <gpiod.h>
 #include <poll.h>
 
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <ctime>
 
@@ -14,11 +14,14 @@ namespace puddle::io {
 
 namespace {
 
-double seconds(const timespec& ts) { return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9; }
+double seconds(const timespec& ts) {
+    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
 
 class GpiodV1Line : public GpioLine {
 public:
-    GpiodV1Line(gpiod_chip* chip, gpiod_line* line) : chip_(chip), line_(line), fd_(gpiod_line_event_get_fd(line)) {}
+    GpiodV1Line(gpiod_chip* chip, gpiod_line* line)
+        : chip_(chip), line_(line), fd_(gpiod_line_event_get_fd(line)) {}
     ~GpiodV1Line() override {
         gpiod_line_release(line_);
         gpiod_chip_close(chip_);
@@ -26,7 +29,9 @@ public:
 
     Result<bool> level() override {
         const int v = gpiod_line_get_value(line_);
-        if (v < 0) return make_error(ExitCode::Runtime, "gpio: reading {}: {}", gpiod_line_name(line_) ? gpiod_line_name(line_) : "line", std::strerror(errno));
+        if (v < 0)
+            return make_error(ExitCode::Runtime, "gpio: reading {}: {}",
+                              gpiod_line_name(line_) ? gpiod_line_name(line_) : "line", std::strerror(errno));
         return v == 1;
     }
 
@@ -44,10 +49,12 @@ public:
             const int got = gpiod_line_event_read_fd_multiple(fd_, events, want);
             if (got < 0) {
                 if (errno == EAGAIN || errno == EINTR) break;
-                return make_error(ExitCode::Runtime, "gpio: line {}: {}", gpiod_line_offset(line_), std::strerror(errno));
+                return make_error(ExitCode::Runtime, "gpio: line {}: {}", gpiod_line_offset(line_),
+                                  std::strerror(errno));
             }
             for (int i = 0; i < got; ++i)
-                out[n++] = LineEvent{events[i].event_type == GPIOD_LINE_EVENT_RISING_EDGE, seconds(events[i].ts)};
+                out[n++] =
+                    LineEvent{events[i].event_type == GPIOD_LINE_EVENT_RISING_EDGE, seconds(events[i].ts)};
             if (got < static_cast<int>(want)) break;
         }
         return n;
@@ -67,8 +74,9 @@ public:
         errno = 0;
         gpiod_chip* chip = gpiod_chip_open_lookup(r.chip.c_str());
         if (!chip) return gpio_request_error(r, errno ? errno : ENOENT);
-        gpiod_line* line = is_number(r.line) ? gpiod_chip_get_line(chip, static_cast<unsigned>(std::stoul(r.line)))
-                                             : gpiod_chip_find_line(chip, r.line.c_str());
+        gpiod_line* line = is_number(r.line)
+                               ? gpiod_chip_get_line(chip, static_cast<unsigned>(std::stoul(r.line)))
+                               : gpiod_chip_find_line(chip, r.line.c_str());
         if (!line) {
             const int err = errno ? errno : ENOENT;
             gpiod_chip_close(chip);
@@ -76,10 +84,17 @@ public:
         }
         int flags = r.active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
         switch (r.bias) {
-            case params::LineBias::AsIs: break;
-            case params::LineBias::PullUp: flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP; break;
-            case params::LineBias::PullDown: flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN; break;
-            case params::LineBias::Disabled: flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE; break;
+            case params::LineBias::AsIs:
+                break;
+            case params::LineBias::PullUp:
+                flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
+                break;
+            case params::LineBias::PullDown:
+                flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
+                break;
+            case params::LineBias::Disabled:
+                flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE;
+                break;
         }
         const gpiod_line_request_config config{"puddle", GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES, flags};
         if (gpiod_line_request(line, &config, 0) < 0) {
@@ -108,6 +123,8 @@ public:
 
 }  // namespace
 
-std::unique_ptr<GpioBackend> make_gpiod_backend() { return std::make_unique<GpiodV1Backend>(); }
+std::unique_ptr<GpioBackend> make_gpiod_backend() {
+    return std::make_unique<GpiodV1Backend>();
+}
 
 }  // namespace puddle::io

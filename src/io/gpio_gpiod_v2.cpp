@@ -20,11 +20,15 @@ struct Deleter {
     void operator()(T* p) const { Free(p); }
 };
 using ChipPtr = std::unique_ptr<gpiod_chip, Deleter<gpiod_chip, gpiod_chip_close>>;
-using SettingsPtr = std::unique_ptr<gpiod_line_settings, Deleter<gpiod_line_settings, gpiod_line_settings_free>>;
+using SettingsPtr =
+    std::unique_ptr<gpiod_line_settings, Deleter<gpiod_line_settings, gpiod_line_settings_free>>;
 using LineConfigPtr = std::unique_ptr<gpiod_line_config, Deleter<gpiod_line_config, gpiod_line_config_free>>;
-using RequestConfigPtr = std::unique_ptr<gpiod_request_config, Deleter<gpiod_request_config, gpiod_request_config_free>>;
-using RequestPtr = std::unique_ptr<gpiod_line_request, Deleter<gpiod_line_request, gpiod_line_request_release>>;
-using BufferPtr = std::unique_ptr<gpiod_edge_event_buffer, Deleter<gpiod_edge_event_buffer, gpiod_edge_event_buffer_free>>;
+using RequestConfigPtr =
+    std::unique_ptr<gpiod_request_config, Deleter<gpiod_request_config, gpiod_request_config_free>>;
+using RequestPtr =
+    std::unique_ptr<gpiod_line_request, Deleter<gpiod_line_request, gpiod_line_request_release>>;
+using BufferPtr =
+    std::unique_ptr<gpiod_edge_event_buffer, Deleter<gpiod_edge_event_buffer, gpiod_edge_event_buffer_free>>;
 using InfoPtr = std::unique_ptr<gpiod_chip_info, Deleter<gpiod_chip_info, gpiod_chip_info_free>>;
 
 // v2 opens chips by path only: resolve a name, a number or a label the way v1's open_lookup did.
@@ -72,7 +76,8 @@ public:
                 return make_error(ExitCode::Runtime, "gpio: line {}: {}", offset_, std::strerror(errno));
             }
             for (int i = 0; i < got && n < out.size(); ++i) {
-                gpiod_edge_event* e = gpiod_edge_event_buffer_get_event(buffer_.get(), static_cast<unsigned long>(i));
+                gpiod_edge_event* e =
+                    gpiod_edge_event_buffer_get_event(buffer_.get(), static_cast<unsigned long>(i));
                 out[n++] = LineEvent{gpiod_edge_event_get_event_type(e) == GPIOD_EDGE_EVENT_RISING_EDGE,
                                      static_cast<double>(gpiod_edge_event_get_timestamp_ns(e)) * 1e-9};
             }
@@ -95,7 +100,8 @@ public:
         errno = 0;
         ChipPtr chip = open_chip(r.chip);
         if (!chip) return gpio_request_error(r, errno ? errno : ENOENT);
-        int offset = is_number(r.line) ? std::stoi(r.line) : gpiod_chip_get_line_offset_from_name(chip.get(), r.line.c_str());
+        int offset = is_number(r.line) ? std::stoi(r.line)
+                                       : gpiod_chip_get_line_offset_from_name(chip.get(), r.line.c_str());
         if (offset < 0) return gpio_request_error(r, ENOENT);
 
         SettingsPtr settings(gpiod_line_settings_new());
@@ -107,10 +113,17 @@ public:
         gpiod_line_settings_set_event_clock(settings.get(), GPIOD_LINE_CLOCK_MONOTONIC);
         gpiod_line_settings_set_active_low(settings.get(), r.active_low);
         switch (r.bias) {
-            case params::LineBias::AsIs: break;
-            case params::LineBias::PullUp: gpiod_line_settings_set_bias(settings.get(), GPIOD_LINE_BIAS_PULL_UP); break;
-            case params::LineBias::PullDown: gpiod_line_settings_set_bias(settings.get(), GPIOD_LINE_BIAS_PULL_DOWN); break;
-            case params::LineBias::Disabled: gpiod_line_settings_set_bias(settings.get(), GPIOD_LINE_BIAS_DISABLED); break;
+            case params::LineBias::AsIs:
+                break;
+            case params::LineBias::PullUp:
+                gpiod_line_settings_set_bias(settings.get(), GPIOD_LINE_BIAS_PULL_UP);
+                break;
+            case params::LineBias::PullDown:
+                gpiod_line_settings_set_bias(settings.get(), GPIOD_LINE_BIAS_PULL_DOWN);
+                break;
+            case params::LineBias::Disabled:
+                gpiod_line_settings_set_bias(settings.get(), GPIOD_LINE_BIAS_DISABLED);
+                break;
         }
         const unsigned offsets[] = {static_cast<unsigned>(offset)};
         if (gpiod_line_config_add_line_settings(line_config.get(), offsets, 1, settings.get()) < 0)
@@ -140,6 +153,8 @@ public:
 
 }  // namespace
 
-std::unique_ptr<GpioBackend> make_gpiod_backend() { return std::make_unique<GpiodV2Backend>(); }
+std::unique_ptr<GpioBackend> make_gpiod_backend() {
+    return std::make_unique<GpiodV2Backend>();
+}
 
 }  // namespace puddle::io

@@ -1,6 +1,7 @@
 #include "io/gpio_mock.hpp"
 
 #include <fcntl.h>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,8 +11,6 @@
 #include <cstdio>
 #include <cstring>
 #include <sstream>
-
-#include <spdlog/spdlog.h>
 
 namespace puddle::io {
 
@@ -45,7 +44,8 @@ namespace {
 
 class MockLine : public GpioLine {
 public:
-    MockLine(std::shared_ptr<MockGpio::Chip> chip, int offset, const LineRequest& r) : chip_(std::move(chip)) {
+    MockLine(std::shared_ptr<MockGpio::Chip> chip, int offset, const LineRequest& r)
+        : chip_(std::move(chip)) {
         listener_.offset = offset;
         listener_.active_low = r.active_low;
         pull_up_ = r.bias == params::LineBias::PullUp;
@@ -87,7 +87,8 @@ MockGpio::MockGpio(std::string script) : script_(std::move(script)) {
         if (!fd_)
             spdlog::warn("gpio: mock script {} cannot be opened: {}; knobs will not move", script_,
                          std::strerror(errno));
-        else spdlog::info("gpio: mock backend reading line changes from {}", script_);
+        else
+            spdlog::info("gpio: mock backend reading line changes from {}", script_);
     }
 }
 
@@ -130,8 +131,10 @@ void MockGpio::set_level(const std::string& name, int offset, bool raw_level, do
         if (l->offset != offset) continue;
         const std::size_t at = (l->head + l->count) % queue_size;
         l->queue[at] = LineEvent{raw_level != l->active_low, time};
-        if (l->count < queue_size) ++l->count;
-        else l->head = (l->head + 1) % queue_size;
+        if (l->count < queue_size)
+            ++l->count;
+        else
+            l->head = (l->head + 1) % queue_size;
     }
 }
 
@@ -150,8 +153,10 @@ Result<std::unique_ptr<GpioLine>> MockGpio::request(const LineRequest& r) {
         if (key == name || c->label == r.chip) chip = c;
     if (!chip) return gpio_request_error(r, ENOENT);
     int offset = -1;
-    if (is_number(r.line)) offset = std::stoi(r.line);
-    else if (r.line.starts_with("GPIO") && is_number(r.line.substr(4))) offset = std::stoi(r.line.substr(4));
+    if (is_number(r.line))
+        offset = std::stoi(r.line);
+    else if (r.line.starts_with("GPIO") && is_number(r.line.substr(4)))
+        offset = std::stoi(r.line.substr(4));
     if (offset < 0 || offset >= mock_line_count) return gpio_request_error(r, ENOENT);
     if (const int err = chip->error[static_cast<std::size_t>(offset)]) return gpio_request_error(r, err);
     for (const Chip::Listener* l : chip->listeners)
@@ -167,14 +172,17 @@ bool MockGpio::command(std::string_view text, double now) {
     if (a.empty() || a[0] == '#') return false;
     if (a == "remove" && !b.empty()) return remove_chip(b), true;
     if (a == "add" && !b.empty()) return add_chip(b, c), true;
-    if ((a == "busy" || a == "deny") && is_number(c)) return set_error(b, std::stoi(c), a == "busy" ? EBUSY : EACCES), true;
+    if ((a == "busy" || a == "deny") && is_number(c))
+        return set_error(b, std::stoi(c), a == "busy" ? EBUSY : EACCES), true;
     if (is_number(b) && (c == "0" || c == "1")) return set_level(a, std::stoi(b), c == "1", now), true;
     return false;
 }
 
 void MockGpio::note_bad_line(std::string_view line, std::string_view why) {
     std::string shown(line.substr(0, 120));
-    std::replace_if(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+    std::replace_if(
+        shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; },
+        '?');
     const auto level = ++bad_lines_ <= bad_lines_warned ? spdlog::level::warn : spdlog::level::debug;
     spdlog::log(level, "gpio: mock script {}: {}: '{}'{}", script_, why, shown,
                 bad_lines_ == bad_lines_warned ? " (further bad lines are logged at debug level)" : "");

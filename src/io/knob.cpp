@@ -1,8 +1,8 @@
 #include "io/knob.hpp"
 
-#include <algorithm>
-
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 namespace puddle::io {
 
@@ -51,8 +51,12 @@ bool Knob::try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out)
     a_ = *level_a;
     b_ = *level_b;
     switch (spec_.kind) {
-        case params::KnobKind::Encoder: decoder_.reset(a_, b_); break;
-        case params::KnobKind::Button: debouncer_ = Debouncer(spec_.debounce_ms * 1e-3, a_); break;
+        case params::KnobKind::Encoder:
+            decoder_.reset(a_, b_);
+            break;
+        case params::KnobKind::Button:
+            debouncer_ = Debouncer(spec_.debounce_ms * 1e-3, a_);
+            break;
         case params::KnobKind::Switch:
             debouncer_ = Debouncer(spec_.debounce_ms * 1e-3, a_);
             out.push_back({KnobAction::Kind::Level, &spec_, 0, a_});  // the switch's position applies at once
@@ -75,8 +79,8 @@ void Knob::update(GpioBackend& gpio, double now, std::vector<KnobAction>& out) {
     auto na = line_a_->read_events(events_a_);
     auto nb = line_b_ ? line_b_->read_events(events_b_) : Result<std::size_t>(std::size_t{0});
     if (!na || !nb) {
-        spdlog::warn("{} (knob: {}); retrying every {:g} s", (!na ? na.error() : nb.error()).message, spec_.describe(),
-                     retry_seconds);
+        spdlog::warn("{} (knob: {}); retrying every {:g} s", (!na ? na.error() : nb.error()).message,
+                     spec_.describe(), retry_seconds);
         last_warning_ = "gone";
         close_lines();
         next_try_ = now + retry_seconds;

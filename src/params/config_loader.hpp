@@ -26,7 +26,7 @@ struct Config {
     std::vector<ConfigEntry> entries;
     std::optional<std::string> preset;  // top-level `preset = "downpour"`
     int preset_line = 0;
-    std::vector<KnobSpec> knobs;        // `[[knob]]` tables
+    std::vector<KnobSpec> knobs;  // `[[knob]]` tables
 };
 
 // At most this many [[knob]] tables: each holds GPIO lines and a queue of events.

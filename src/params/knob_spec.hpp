@@ -16,17 +16,17 @@ enum class LineBias { AsIs, PullUp, PullDown, Disabled };
 
 struct KnobSpec {
     KnobKind kind = KnobKind::Encoder;
-    int config_line = 0;      // where the [[knob]] starts, for messages
+    int config_line = 0;             // where the [[knob]] starts, for messages
     std::string chip = "gpiochip0";  // name, /dev path, label or number
-    std::string line;         // button/switch line, encoder line A: an offset ("17") or a line name ("GPIO17")
-    std::string line_b;       // encoder line B
+    std::string line;    // button/switch line, encoder line A: an offset ("17") or a line name ("GPIO17")
+    std::string line_b;  // encoder line B
     bool active_low = false;
     LineBias bias = LineBias::AsIs;
     std::optional<ParamId> param;  // encoder target; reset/toggle/switch parameter
     double step = 0;               // encoder: change per detent (0: 1/50 of the range)
     double acceleration = 0;       // encoder: 0 none; 1 doubles the step at 8 detents/s
     ButtonAction action = ButtonAction::NextPreset;
-    int debounce_ms = 20;          // button and switch
+    int debounce_ms = 20;  // button and switch
 
     bool operator==(const KnobSpec&) const = default;
     // "encoder rain.intensity on gpiochip0 lines 17/18" (for logs).

@@ -10,10 +10,12 @@ namespace puddle::params {
 
 namespace {
 
-constexpr std::array known_keys{"kind",   "chip",   "line",   "a",          "b",      "param",    "step",
-                                "acceleration", "action", "active_low", "bias", "debounce_ms"};
+constexpr std::array known_keys{"kind", "chip",         "line",   "a",          "b",    "param",
+                                "step", "acceleration", "action", "active_low", "bias", "debounce_ms"};
 
-int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+int line_of(const toml::node& n) {
+    return static_cast<int>(n.source().begin.line);
+}
 
 std::string as_written(const toml::node& n) {
     std::ostringstream out;
@@ -50,13 +52,15 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
     k.config_line = line_of(table);
     const int at = k.config_line;
     auto fail = [&](int line, std::string what) {
-        return make_error(ExitCode::Config, "config: {}:{}: knob {}: {}", path, line ? line : at, index, what);
+        return make_error(ExitCode::Config, "config: {}:{}: knob {}: {}", path, line ? line : at, index,
+                          what);
     };
     for (auto&& [key, node] : table) {
         bool known = false;
         for (const char* name : known_keys) known = known || key.str() == name;
         if (!known)
-            return fail(line_of(node), fmt::format("unknown key '{}' (knob keys: {})", key.str(), fmt::join(known_keys, ", ")));
+            return fail(line_of(node), fmt::format("unknown key '{}' (knob keys: {})", key.str(),
+                                                   fmt::join(known_keys, ", ")));
     }
 
     const auto kind_text = table["kind"].value_exact<std::string>();
@@ -67,12 +71,15 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
 
     if (auto n = table.get("chip")) {
         auto s = n->value_exact<std::string>();
-        if (!s || s->empty()) return fail(line_of(*n), "chip must be text: a name (\"gpiochip0\"), a path or a label");
+        if (!s || s->empty())
+            return fail(line_of(*n), "chip must be text: a name (\"gpiochip0\"), a path or a label");
         k.chip = *s;
     }
     auto read_line = [&](const char* key, std::string& out) -> Result<void> {
         const toml::node* n = table.get(key);
-        if (!n) return fail(0, fmt::format("'{}' is missing: the line offset (17) or line name (\"GPIO17\")", key));
+        if (!n)
+            return fail(0,
+                        fmt::format("'{}' is missing: the line offset (17) or line name (\"GPIO17\")", key));
         auto ref = line_ref(*n);
         if (!ref)
             return fail(line_of(*n),
@@ -97,26 +104,32 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
         constexpr std::array biases{LineBias::AsIs, LineBias::PullUp, LineBias::PullDown, LineBias::Disabled};
         auto s = n->value_exact<std::string>();
         auto b = s ? pick(*s, biases, bias_name) : std::nullopt;
-        if (!b) return fail(line_of(*n), "bias must be \"pull-up\", \"pull-down\", \"disabled\" or \"as-is\"");
+        if (!b)
+            return fail(line_of(*n), "bias must be \"pull-up\", \"pull-down\", \"disabled\" or \"as-is\"");
         k.bias = *b;
     }
     if (auto n = table.get("param")) {
         auto s = n->value_exact<std::string>();
         const ParamDecl* d = s ? find_param(*s) : nullptr;
         if (!d)
-            return fail(line_of(*n), fmt::format("param '{}' is not a parameter (did you mean '{}'?)", s.value_or(""),
-                                                 nearest_param_name(s.value_or(""))));
+            return fail(line_of(*n), fmt::format("param '{}' is not a parameter (did you mean '{}'?)",
+                                                 s.value_or(""), nearest_param_name(s.value_or(""))));
         k.param = d->id;
     }
     if (auto n = table.get("action")) {
-        constexpr std::array actions{ButtonAction::NextPreset, ButtonAction::PreviousPreset, ButtonAction::Reset,
-                                     ButtonAction::Toggle, ButtonAction::SaveState};
+        constexpr std::array actions{ButtonAction::NextPreset, ButtonAction::PreviousPreset,
+                                     ButtonAction::Reset, ButtonAction::Toggle, ButtonAction::SaveState};
         auto s = n->value_exact<std::string>();
         auto a = s ? pick(*s, actions, button_action_name) : std::nullopt;
-        if (!a) return fail(line_of(*n), "action must be \"next-preset\", \"previous-preset\", \"reset\", \"toggle\" or \"save\"");
+        if (!a)
+            return fail(
+                line_of(*n),
+                "action must be \"next-preset\", \"previous-preset\", \"reset\", \"toggle\" or \"save\"");
         k.action = *a;
     } else if (k.kind == KnobKind::Button) {
-        return fail(0, "a button needs an action: \"next-preset\", \"previous-preset\", \"reset\", \"toggle\" or \"save\"");
+        return fail(0,
+                    "a button needs an action: \"next-preset\", \"previous-preset\", \"reset\", \"toggle\" "
+                    "or \"save\"");
     }
     // Numbers are checked as written (an int64 or a double) before they are stored; the message names the
     // key, the value and the range.
@@ -143,7 +156,8 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
     const bool boolean = target && target->kind == ParamKind::Bool;
     switch (k.kind) {
         case KnobKind::Encoder:
-            if (!numeric) return fail(0, "an encoder needs param = a number parameter (e.g. \"rain.intensity\")");
+            if (!numeric)
+                return fail(0, "an encoder needs param = a number parameter (e.g. \"rain.intensity\")");
             if (k.step > target->max - target->min)
                 return fail(line_of(*table.get("step")),
                             fmt::format("step = {} is larger than the whole range of {} ({} to {})", k.step,
@@ -156,12 +170,17 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
             if (target->kind == ParamKind::Int && k.step < 1) k.step = 1;
             break;
         case KnobKind::Button:
-            if (k.action == ButtonAction::Reset && !target) return fail(0, "action \"reset\" needs param = the parameter to reset");
+            if (k.action == ButtonAction::Reset && !target)
+                return fail(0, "action \"reset\" needs param = the parameter to reset");
             if (k.action == ButtonAction::Toggle && !boolean)
-                return fail(0, "action \"toggle\" needs param = a true/false parameter (e.g. \"ground.checkerboard\")");
+                return fail(
+                    0,
+                    "action \"toggle\" needs param = a true/false parameter (e.g. \"ground.checkerboard\")");
             break;
         case KnobKind::Switch:
-            if (!boolean) return fail(0, "a switch needs param = a true/false parameter (e.g. \"ground.checkerboard\")");
+            if (!boolean)
+                return fail(0,
+                            "a switch needs param = a true/false parameter (e.g. \"ground.checkerboard\")");
             break;
     }
     return k;

@@ -1,9 +1,9 @@
 #pragma once
 // Reading a `[[knob]]` table; used by the config loader only (it keeps toml++ out of other headers).
 
-#include <string_view>
-
 #include <toml++/toml.h>
+
+#include <string_view>
 
 #include "params/knob_spec.hpp"
 #include "util/result.hpp"

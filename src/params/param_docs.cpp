@@ -7,12 +7,16 @@ namespace puddle::params {
 namespace {
 std::string range_cell(const ParamDecl& d) {
     switch (d.kind) {
-        case ParamKind::Bool: return "true/false";
-        case ParamKind::Enum: return fmt::format("{}", fmt::join(d.choices, ", "));
-        case ParamKind::Path: return "text";
+        case ParamKind::Bool:
+            return "true/false";
+        case ParamKind::Enum:
+            return fmt::format("{}", fmt::join(d.choices, ", "));
+        case ParamKind::Path:
+            return "text";
         default: {
             auto num = [](double v) { return fmt::format("{}", v); };
-            return fmt::format("{} to {}{}", num(d.min), num(d.max), d.unit.empty() ? "" : fmt::format(" {}", d.unit));
+            return fmt::format("{} to {}{}", num(d.min), num(d.max),
+                               d.unit.empty() ? "" : fmt::format(" {}", d.unit));
         }
     }
 }
@@ -33,15 +37,16 @@ std::string format_params_list() {
 std::string format_params_markdown() {
     std::string out = "| parameter | type | default | range | what it does |\n|---|---|---|---|---|\n";
     for (const ParamDecl& d : param_decls())
-        out += fmt::format("| `{}` | {} | `{}` | {} | {} |\n", d.name, kind_name(d.kind), format_value(d.default_value),
-                           range_cell(d), d.help);
+        out += fmt::format("| `{}` | {} | `{}` | {} | {} |\n", d.name, kind_name(d.kind),
+                           format_value(d.default_value), range_cell(d), d.help);
     return out;
 }
 
 std::string format_effective(const Params& params, std::string_view preset) {
-    std::string out = fmt::format("# Effective values; after each, where it came from (default < preset < config < "
-                                  "knob < --set).\n# preset: {}\n",
-                                  preset.empty() ? "none" : preset);
+    std::string out = fmt::format(
+        "# Effective values; after each, where it came from (default < preset < config < "
+        "knob < --set).\n# preset: {}\n",
+        preset.empty() ? "none" : preset);
     for (const ParamDecl& d : param_decls()) {
         const ParamSource s = params.source(d.id);
         out += fmt::format("{:<26} = {:<24} # {}{}\n", d.name, format_value(params.at(d.id)), source_name(s),

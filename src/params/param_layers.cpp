@@ -1,14 +1,15 @@
 #include "params/param_layers.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace puddle::params {
 
 ParamValue clamp_to_range(const ParamDecl& d, ParamValue v) {
     if (auto* i = std::get_if<int>(&v)) *i = std::clamp(*i, static_cast<int>(d.min), static_cast<int>(d.max));
-    if (auto* f = std::get_if<float>(&v)) *f = std::clamp(*f, static_cast<float>(d.min), static_cast<float>(d.max));
+    if (auto* f = std::get_if<float>(&v))
+        *f = std::clamp(*f, static_cast<float>(d.min), static_cast<float>(d.max));
     return v;
 }
 
@@ -34,8 +35,8 @@ Result<void> ParamLayers::set_config(Config config) {
         // "config: PRESET:2: ..." (a broken preset file) already names its file; say which line chose it.
         std::string_view inner = r.error().message;
         if (inner.starts_with("config: ")) inner.remove_prefix(8);
-        return make_error(ExitCode::Config, "config: {}:{}: preset = \"{}\": {}", config.path, config.preset_line,
-                          name, inner);
+        return make_error(ExitCode::Config, "config: {}:{}: preset = \"{}\": {}", config.path,
+                          config.preset_line, name, inner);
     }
     config_ = std::move(config);
     preset_ = std::move(preset);
@@ -57,14 +58,16 @@ void ParamLayers::set_knob(ParamId id, ParamValue value) {
     knob_[static_cast<std::size_t>(id)] = clamp_to_range(decl(id), std::move(value));
 }
 
-void ParamLayers::clear_knob(ParamId id) { knob_[static_cast<std::size_t>(id)].reset(); }
+void ParamLayers::clear_knob(ParamId id) {
+    knob_[static_cast<std::size_t>(id)].reset();
+}
 
 Result<void> ParamLayers::restore_state(const Config& state) {
     for (const ConfigEntry& e : state.entries) set_knob(e.id, e.value);
     if (state.preset && *state.preset != knob_preset_) {
         if (auto r = select_preset(*state.preset); !r)
-            return make_error(ExitCode::Config, "state: {}: saved preset '{}' is gone; using the config's", state.path,
-                              *state.preset);
+            return make_error(ExitCode::Config, "state: {}: saved preset '{}' is gone; using the config's",
+                              state.path, *state.preset);
     }
     return {};
 }

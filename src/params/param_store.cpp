@@ -4,11 +4,16 @@ namespace puddle::params {
 
 std::string_view source_name(ParamSource s) {
     switch (s) {
-        case ParamSource::Default: return "default";
-        case ParamSource::Preset: return "preset";
-        case ParamSource::Config: return "config";
-        case ParamSource::Knob: return "knob";
-        case ParamSource::CommandLine: return "--set";
+        case ParamSource::Default:
+            return "default";
+        case ParamSource::Preset:
+            return "preset";
+        case ParamSource::Config:
+            return "config";
+        case ParamSource::Knob:
+            return "knob";
+        case ParamSource::CommandLine:
+            return "--set";
     }
     return "?";
 }

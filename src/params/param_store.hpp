@@ -5,11 +5,10 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <type_traits>
 #include <variant>
-
-#include <glm/vec3.hpp>
 
 #include "params/param_types.hpp"
 #include "params/registry.hpp"

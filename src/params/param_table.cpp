@@ -23,10 +23,11 @@ std::vector<std::string_view> choices_of() {
 std::vector<ParamDecl> build_table() {
     std::vector<ParamDecl> t;
 #define PARAM(id, name, kind, def, lo, hi, unit, help) \
-    t.push_back({ParamId::id, name, ParamKind::kind, ParamValue(def), lo, hi, unit, help, {}, uniform_name(name)});
-#define PARAM_ENUM(id, name, Type, def, CHOICES, help)                                                    \
-    t.push_back({ParamId::id, name, ParamKind::Enum, ParamValue(std::string(choice_name(Type::def))), 0, 0, "", \
-                 help, choices_of<Type>(), uniform_name(name)});
+    t.push_back(                                       \
+        {ParamId::id, name, ParamKind::kind, ParamValue(def), lo, hi, unit, help, {}, uniform_name(name)});
+#define PARAM_ENUM(id, name, Type, def, CHOICES, help)                                                      \
+    t.push_back({ParamId::id, name, ParamKind::Enum, ParamValue(std::string(choice_name(Type::def))), 0, 0, \
+                 "", help, choices_of<Type>(), uniform_name(name)});
 #include "params/params.def"
     return t;
 }

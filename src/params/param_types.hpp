@@ -6,10 +6,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
-
-#include <glm/vec3.hpp>
 
 #include "params/registry.hpp"
 
@@ -19,7 +18,8 @@ namespace puddle::params {
 // which is also the index a shader sees.
 #define PUDDLE_ENUM_MEMBER(ident, spelling) ident,
 #define PARAM(...)
-#define PARAM_ENUM(id, name, Type, def, CHOICES, help) enum class Type : std::uint8_t { CHOICES(PUDDLE_ENUM_MEMBER) };
+#define PARAM_ENUM(id, name, Type, def, CHOICES, help) \
+    enum class Type : std::uint8_t { CHOICES(PUDDLE_ENUM_MEMBER) };
 #include "params/params.def"
 #undef PUDDLE_ENUM_MEMBER
 
@@ -31,12 +31,12 @@ constexpr std::array<std::string_view, choice_count<E>> choice_names();
 #define PUDDLE_ENUM_COUNT(ident, spelling) +1
 #define PUDDLE_ENUM_SPELLING(ident, spelling) std::string_view(spelling),
 #define PARAM(...)
-#define PARAM_ENUM(id, name, Type, def, CHOICES, help)                                       \
-    template <>                                                                              \
-    inline constexpr std::size_t choice_count<Type> = 0 CHOICES(PUDDLE_ENUM_COUNT);          \
-    template <>                                                                              \
-    constexpr std::array<std::string_view, choice_count<Type>> choice_names<Type>() {        \
-        return {CHOICES(PUDDLE_ENUM_SPELLING)};                                              \
+#define PARAM_ENUM(id, name, Type, def, CHOICES, help)                                \
+    template <>                                                                       \
+    inline constexpr std::size_t choice_count<Type> = 0 CHOICES(PUDDLE_ENUM_COUNT);   \
+    template <>                                                                       \
+    constexpr std::array<std::string_view, choice_count<Type>> choice_names<Type>() { \
+        return {CHOICES(PUDDLE_ENUM_SPELLING)};                                       \
     }
 #include "params/params.def"
 #undef PUDDLE_ENUM_COUNT
@@ -50,20 +50,38 @@ constexpr std::string_view choice_name(E e) {
 namespace detail {
 template <ParamKind>
 struct KindType;
-template <> struct KindType<ParamKind::Bool> { using type = bool; };
-template <> struct KindType<ParamKind::Int> { using type = int; };
-template <> struct KindType<ParamKind::Float> { using type = float; };
-template <> struct KindType<ParamKind::Vec3> { using type = glm::vec3; };
-template <> struct KindType<ParamKind::Color> { using type = glm::vec3; };
-template <> struct KindType<ParamKind::Path> { using type = std::string; };
+template <>
+struct KindType<ParamKind::Bool> {
+    using type = bool;
+};
+template <>
+struct KindType<ParamKind::Int> {
+    using type = int;
+};
+template <>
+struct KindType<ParamKind::Float> {
+    using type = float;
+};
+template <>
+struct KindType<ParamKind::Vec3> {
+    using type = glm::vec3;
+};
+template <>
+struct KindType<ParamKind::Color> {
+    using type = glm::vec3;
+};
+template <>
+struct KindType<ParamKind::Path> {
+    using type = std::string;
+};
 }  // namespace detail
 
 // ParamType<ParamId::rain_drop_count> is int; ParamType<ParamId::scene_kind> is SceneKind.
 template <ParamId id>
 struct ParamTraits;
-#define PARAM(id, name, kind, ...)            \
-    template <>                               \
-    struct ParamTraits<ParamId::id> {         \
+#define PARAM(id, name, kind, ...)                            \
+    template <>                                               \
+    struct ParamTraits<ParamId::id> {                         \
         using type = detail::KindType<ParamKind::kind>::type; \
     };
 #define PARAM_ENUM(id, name, Type, ...) \

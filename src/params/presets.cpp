@@ -56,13 +56,14 @@ bool Presets::contains(std::string_view name) const {
 Result<Config> Presets::get(std::string_view name) const {
     auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.name == name; });
     if (it == entries_.end())
-        return make_error(ExitCode::Config, "preset '{}' does not exist (presets: {})", name, fmt::join(names_, ", "));
+        return make_error(ExitCode::Config, "preset '{}' does not exist (presets: {})", name,
+                          fmt::join(names_, ", "));
     if (it->read_error) return *it->read_error;
     auto config = parse_config(it->text, it->origin);
     if (!config) return config.error();
     if (config->preset || !config->knobs.empty())
-        return make_error(ExitCode::Config, "config: {}: a preset holds parameters only (no preset = or [[knob]])",
-                          it->origin);
+        return make_error(ExitCode::Config,
+                          "config: {}: a preset holds parameters only (no preset = or [[knob]])", it->origin);
     return config;
 }
 

@@ -9,7 +9,9 @@
 
 namespace puddle::params {
 
-const ParamDecl& decl(ParamId id) { return param_decls()[static_cast<std::size_t>(id)]; }
+const ParamDecl& decl(ParamId id) {
+    return param_decls()[static_cast<std::size_t>(id)];
+}
 
 const ParamDecl* find_param(std::string_view name) {
     for (const ParamDecl& d : param_decls())
@@ -117,13 +119,20 @@ std::string_view nearest_param_name(std::string_view name) {
 
 std::string_view kind_name(ParamKind k) {
     switch (k) {
-        case ParamKind::Bool: return "bool";
-        case ParamKind::Int: return "int";
-        case ParamKind::Float: return "float";
-        case ParamKind::Vec3: return "vec3";
-        case ParamKind::Color: return "color";
-        case ParamKind::Enum: return "enum";
-        case ParamKind::Path: return "text";
+        case ParamKind::Bool:
+            return "bool";
+        case ParamKind::Int:
+            return "int";
+        case ParamKind::Float:
+            return "float";
+        case ParamKind::Vec3:
+            return "vec3";
+        case ParamKind::Color:
+            return "color";
+        case ParamKind::Enum:
+            return "enum";
+        case ParamKind::Path:
+            return "text";
     }
     return "?";
 }
@@ -131,14 +140,20 @@ std::string_view kind_name(ParamKind k) {
 std::string describe_range(const ParamDecl& d) {
     const std::string unit = d.unit.empty() ? "" : fmt::format(" {}", d.unit);
     switch (d.kind) {
-        case ParamKind::Bool: return "true or false";
-        case ParamKind::Int: return fmt::format("an integer from {} to {}{}", number(d.min), number(d.max), unit);
-        case ParamKind::Float: return fmt::format("a number from {} to {}{}", number(d.min), number(d.max), unit);
+        case ParamKind::Bool:
+            return "true or false";
+        case ParamKind::Int:
+            return fmt::format("an integer from {} to {}{}", number(d.min), number(d.max), unit);
+        case ParamKind::Float:
+            return fmt::format("a number from {} to {}{}", number(d.min), number(d.max), unit);
         case ParamKind::Vec3:
         case ParamKind::Color:
-            return fmt::format("three numbers [x, y, z], each from {} to {}{}", number(d.min), number(d.max), unit);
-        case ParamKind::Enum: return fmt::format("one of: {}", fmt::join(d.choices, ", "));
-        case ParamKind::Path: return fmt::format("text ({})", d.unit);
+            return fmt::format("three numbers [x, y, z], each from {} to {}{}", number(d.min), number(d.max),
+                               unit);
+        case ParamKind::Enum:
+            return fmt::format("one of: {}", fmt::join(d.choices, ", "));
+        case ParamKind::Path:
+            return fmt::format("text ({})", d.unit);
     }
     return "";
 }
@@ -149,7 +164,9 @@ std::string format_value(const ParamValue& v) {
         std::string operator()(int i) const { return fmt::format("{}", i); }
         // The shortest text that reads back as the same float: the state file keeps knob values exactly.
         std::string operator()(float f) const { return fmt::format("{}", f); }
-        std::string operator()(const glm::vec3& c) const { return fmt::format("[{}, {}, {}]", c.x, c.y, c.z); }
+        std::string operator()(const glm::vec3& c) const {
+            return fmt::format("[{}, {}, {}]", c.x, c.y, c.z);
+        }
         std::string operator()(const std::string& s) const { return fmt::format("\"{}\"", s); }
     };
     return std::visit(Visitor{}, v);
@@ -184,7 +201,8 @@ Result<void> validate(const ParamDecl& d, const ParamValue& v) {
             if (!std::holds_alternative<std::string>(v)) return wrong_kind();
             const auto& s = std::get<std::string>(v);
             if (std::find(d.choices.begin(), d.choices.end(), s) == d.choices.end())
-                return make_error(ExitCode::Config, "{} = \"{}\" is not allowed: {}", d.name, s, describe_range(d));
+                return make_error(ExitCode::Config, "{} = \"{}\" is not allowed: {}", d.name, s,
+                                  describe_range(d));
             return {};
         }
         case ParamKind::Path:
@@ -200,9 +218,12 @@ Result<ParamValue> parse_value(const ParamDecl& d, std::string_view text) {
     bool ok = true;
     switch (d.kind) {
         case ParamKind::Bool:
-            if (s == "true" || s == "1" || s == "on" || s == "yes") v = true;
-            else if (s == "false" || s == "0" || s == "off" || s == "no") v = false;
-            else ok = false;
+            if (s == "true" || s == "1" || s == "on" || s == "yes")
+                v = true;
+            else if (s == "false" || s == "0" || s == "off" || s == "no")
+                v = false;
+            else
+                ok = false;
             break;
         case ParamKind::Int: {
             std::int64_t i = 0;
@@ -231,7 +252,8 @@ Result<ParamValue> parse_value(const ParamDecl& d, std::string_view text) {
             double c[3] = {};
             for (int i = 0; i < 3 && ok; ++i) {
                 const auto comma = rest.find(',');
-                if ((i < 2) == (comma == std::string_view::npos)) ok = false;
+                if ((i < 2) == (comma == std::string_view::npos))
+                    ok = false;
                 else if (const auto ec = parse_number(rest.substr(0, comma), c[i]);
                          ec == std::errc::result_out_of_range)
                     return out_of_range(d, s);
@@ -246,10 +268,13 @@ Result<ParamValue> parse_value(const ParamDecl& d, std::string_view text) {
             break;
         }
         case ParamKind::Enum:
-        case ParamKind::Path: v = std::string(s); break;
+        case ParamKind::Path:
+            v = std::string(s);
+            break;
     }
     if (!ok)
-        return make_error(ExitCode::Config, "{} = \"{}\" is not valid: expected {}", d.name, s, describe_range(d));
+        return make_error(ExitCode::Config, "{} = \"{}\" is not valid: expected {}", d.name, s,
+                          describe_range(d));
     if (auto r = validate(d, v); !r) return r.error();
     return v;
 }

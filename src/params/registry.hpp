@@ -3,13 +3,12 @@
 // help), lookup by name, parsing and range checks with messages people can act on.
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <span>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "util/result.hpp"
 

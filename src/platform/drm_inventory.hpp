@@ -24,7 +24,7 @@ enum class DrmCardStatus {
 };
 
 struct DrmCardInfo {
-    std::string path;  // /dev/dri/card0
+    std::string path;    // /dev/dri/card0
     std::string driver;  // "vc4", "virtio_gpu"; empty when the kernel did not say
     DrmCardStatus status = DrmCardStatus::Display;
     std::string error;  // why, when status is not Display: "cannot open: Permission denied (...)"

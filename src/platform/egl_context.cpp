@@ -35,10 +35,14 @@ std::map<EGLDisplay, int>& display_users() {
 
 const char* platform_name(EGLenum platform) {
     switch (platform) {
-        case EGL_PLATFORM_SURFACELESS_MESA: return "surfaceless";
-        case EGL_PLATFORM_GBM_KHR: return "gbm";
-        case EGL_PLATFORM_X11_KHR: return "x11";
-        default: return "default";
+        case EGL_PLATFORM_SURFACELESS_MESA:
+            return "surfaceless";
+        case EGL_PLATFORM_GBM_KHR:
+            return "gbm";
+        case EGL_PLATFORM_X11_KHR:
+            return "x11";
+        default:
+            return "default";
     }
 }
 
@@ -46,22 +50,38 @@ const char* platform_name(EGLenum platform) {
 
 const char* egl_error_name(EGLint error) {
     switch (error) {
-        case EGL_SUCCESS: return "EGL_SUCCESS";
-        case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-        case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-        case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-        case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-        case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-        case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-        case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-        case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-        case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-        case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-        case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-        case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-        case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-        case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-        default: return "EGL error";
+        case EGL_SUCCESS:
+            return "EGL_SUCCESS";
+        case EGL_NOT_INITIALIZED:
+            return "EGL_NOT_INITIALIZED";
+        case EGL_BAD_ACCESS:
+            return "EGL_BAD_ACCESS";
+        case EGL_BAD_ALLOC:
+            return "EGL_BAD_ALLOC";
+        case EGL_BAD_ATTRIBUTE:
+            return "EGL_BAD_ATTRIBUTE";
+        case EGL_BAD_CONTEXT:
+            return "EGL_BAD_CONTEXT";
+        case EGL_BAD_CONFIG:
+            return "EGL_BAD_CONFIG";
+        case EGL_BAD_CURRENT_SURFACE:
+            return "EGL_BAD_CURRENT_SURFACE";
+        case EGL_BAD_DISPLAY:
+            return "EGL_BAD_DISPLAY";
+        case EGL_BAD_SURFACE:
+            return "EGL_BAD_SURFACE";
+        case EGL_BAD_MATCH:
+            return "EGL_BAD_MATCH";
+        case EGL_BAD_PARAMETER:
+            return "EGL_BAD_PARAMETER";
+        case EGL_BAD_NATIVE_PIXMAP:
+            return "EGL_BAD_NATIVE_PIXMAP";
+        case EGL_BAD_NATIVE_WINDOW:
+            return "EGL_BAD_NATIVE_WINDOW";
+        case EGL_CONTEXT_LOST:
+            return "EGL_CONTEXT_LOST";
+        default:
+            return "EGL error";
     }
 }
 
@@ -71,27 +91,42 @@ Result<EglContext> EglContext::create(const EglRequest& request) {
     EglContext ctx;
     if (request.platform != 0) {
         if (!egl_extensions().get_platform_display)
-            return make_error(ExitCode::Display, "egl: eglGetPlatformDisplayEXT missing (client extensions: {})",
+            return make_error(ExitCode::Display,
+                              "egl: eglGetPlatformDisplayEXT missing (client extensions: {})",
                               client_ext ? client_ext : "none");
-        ctx.display_ = egl_extensions().get_platform_display(request.platform, request.native_display, nullptr);
+        ctx.display_ =
+            egl_extensions().get_platform_display(request.platform, request.native_display, nullptr);
     } else {
         ctx.display_ = eglGetDisplay(static_cast<EGLNativeDisplayType>(request.native_display));
     }
     if (ctx.display_ == EGL_NO_DISPLAY)
-        return make_error(ExitCode::Display, "egl: {}: no EGL display: {}", pname, egl_error_name(eglGetError()));
+        return make_error(ExitCode::Display, "egl: {}: no EGL display: {}", pname,
+                          egl_error_name(eglGetError()));
     EGLint major = 0, minor = 0;
     if (!eglInitialize(ctx.display_, &major, &minor)) {
         ctx.display_ = EGL_NO_DISPLAY;  // nothing to terminate
-        return make_error(ExitCode::Display, "egl: {}: eglInitialize: {}", pname, egl_error_name(eglGetError()));
+        return make_error(ExitCode::Display, "egl: {}: eglInitialize: {}", pname,
+                          egl_error_name(eglGetError()));
     }
     ++display_users()[ctx.display_];
     if (const char* ext = eglQueryString(ctx.display_, EGL_EXTENSIONS)) ctx.extensions_ = ext;
     if (!eglBindAPI(EGL_OPENGL_ES_API))
-        return make_error(ExitCode::Display, "egl: {}: eglBindAPI(GLES): {}", pname, egl_error_name(eglGetError()));
+        return make_error(ExitCode::Display, "egl: {}: eglBindAPI(GLES): {}", pname,
+                          egl_error_name(eglGetError()));
 
-    const EGLint attribs[] = {EGL_SURFACE_TYPE, request.window_surface ? EGL_WINDOW_BIT : 0,
-                              EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 0,
-                              EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_NONE};
+    const EGLint attribs[] = {EGL_SURFACE_TYPE,
+                              request.window_surface ? EGL_WINDOW_BIT : 0,
+                              EGL_RED_SIZE,
+                              8,
+                              EGL_GREEN_SIZE,
+                              8,
+                              EGL_BLUE_SIZE,
+                              8,
+                              EGL_ALPHA_SIZE,
+                              0,
+                              EGL_RENDERABLE_TYPE,
+                              EGL_OPENGL_ES3_BIT,
+                              EGL_NONE};
     EGLint count = 0;
     eglChooseConfig(ctx.display_, attribs, nullptr, 0, &count);
     std::vector<EGLConfig> configs(static_cast<std::size_t>(count));
@@ -110,15 +145,17 @@ Result<EglContext> EglContext::create(const EglRequest& request) {
                           request.native_visual ? " matching the scan-out format" : "", count);
 
     const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
-    ctx.context_ = eglCreateContext(ctx.display_, ctx.config_ ? ctx.config_ : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
-                                    context_attribs);
+    ctx.context_ = eglCreateContext(ctx.display_, ctx.config_ ? ctx.config_ : EGL_NO_CONFIG_KHR,
+                                    EGL_NO_CONTEXT, context_attribs);
     if (ctx.context_ == EGL_NO_CONTEXT)
         return make_error(ExitCode::Display, "egl: {}: cannot create a GLES 3 context: {}", pname,
                           egl_error_name(eglGetError()));
     return ctx;
 }
 
-EglContext::EglContext(EglContext&& other) noexcept { *this = std::move(other); }
+EglContext::EglContext(EglContext&& other) noexcept {
+    *this = std::move(other);
+}
 
 EglContext& EglContext::operator=(EglContext&& other) noexcept {
     if (this != &other) {
@@ -132,7 +169,9 @@ EglContext& EglContext::operator=(EglContext&& other) noexcept {
     return *this;
 }
 
-EglContext::~EglContext() { release(); }
+EglContext::~EglContext() {
+    release();
+}
 
 void EglContext::release() {
     if (display_ == EGL_NO_DISPLAY) return;
@@ -160,7 +199,8 @@ Result<void> EglContext::attach_window(void* native_window) {
         return make_error(ExitCode::Display, "egl: cannot create a window surface: {}",
                           egl_error_name(eglGetError()));
     if (!eglMakeCurrent(display_, surface_, surface_, context_))
-        return make_error(ExitCode::Display, "egl: eglMakeCurrent(window): {}", egl_error_name(eglGetError()));
+        return make_error(ExitCode::Display, "egl: eglMakeCurrent(window): {}",
+                          egl_error_name(eglGetError()));
     return {};
 }
 
@@ -218,13 +258,16 @@ Result<std::unique_ptr<gpu::WorkerContext>> EglContext::create_worker_context() 
     return std::unique_ptr<gpu::WorkerContext>(std::make_unique<SharedEglContext>(display_, shared));
 }
 
-bool EglContext::swap_buffers() { return eglSwapBuffers(display_, surface_) == EGL_TRUE; }
+bool EglContext::swap_buffers() {
+    return eglSwapBuffers(display_, surface_) == EGL_TRUE;
+}
 
 bool EglContext::has_extension(std::string_view name) const {
     std::size_t pos = 0;
     while ((pos = extensions_.find(name, pos)) != std::string::npos) {
         const std::size_t end = pos + name.size();
-        if ((pos == 0 || extensions_[pos - 1] == ' ') && (end == extensions_.size() || extensions_[end] == ' '))
+        if ((pos == 0 || extensions_[pos - 1] == ' ') &&
+            (end == extensions_.size() || extensions_[end] == ' '))
             return true;
         pos = end;
     }

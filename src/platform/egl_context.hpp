@@ -15,10 +15,10 @@
 namespace puddle::platform {
 
 struct EglRequest {
-    EGLenum platform = 0;          // EGL_PLATFORM_SURFACELESS_MESA, EGL_PLATFORM_GBM_KHR, EGL_PLATFORM_X11_KHR
+    EGLenum platform = 0;  // EGL_PLATFORM_SURFACELESS_MESA, EGL_PLATFORM_GBM_KHR, EGL_PLATFORM_X11_KHR
     void* native_display = nullptr;  // gbm_device*, Display* (X11), or EGL_DEFAULT_DISPLAY
-    bool window_surface = false;   // need an EGLConfig usable with a window surface
-    EGLint native_visual = 0;      // GBM: the format the config must match (GBM_FORMAT_XRGB8888), 0 = any
+    bool window_surface = false;     // need an EGLConfig usable with a window surface
+    EGLint native_visual = 0;        // GBM: the format the config must match (GBM_FORMAT_XRGB8888), 0 = any
 };
 
 class EglContext {

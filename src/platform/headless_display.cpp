@@ -1,12 +1,12 @@
 // Headless backend: EGL on Mesa's surfaceless platform, rendering into an offscreen texture that tests,
 // screenshots and benchmarks read back. No window system, no DRM device needed.
 
-#include <memory>
-
 #include <fmt/format.h>
 
-#include "gpu/gl.hpp"
+#include <memory>
+
 #include "gpu/device.hpp"
+#include "gpu/gl.hpp"
 #include "platform/display.hpp"
 #include "platform/egl_context.hpp"
 

@@ -2,11 +2,11 @@
 // Fallible start-up returns values, not exceptions: Result<T> holds a T or an Error whose message reads
 // "module: what failed: why" and whose exit code is the one documented in the README.
 
+#include <fmt/format.h>
+
 #include <string>
 #include <utility>
 #include <variant>
-
-#include <fmt/format.h>
 
 namespace puddle {
 

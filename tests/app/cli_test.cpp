@@ -1,11 +1,11 @@
 // Tests for src/app/cli.hpp: parse_command_line's options, defaults and errors.
 #include "app/cli.hpp"
 
+#include <gtest/gtest.h>
+
 #include <initializer_list>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace puddle::app {
 namespace {
@@ -35,7 +35,9 @@ Error parse_error(std::initializer_list<const char*> args) {
     return r.error();
 }
 
-bool has_text(const std::string& text, std::string_view needle) { return text.find(needle) != std::string::npos; }
+bool has_text(const std::string& text, std::string_view needle) {
+    return text.find(needle) != std::string::npos;
+}
 
 TEST(Cli, Defaults) {
     const CliOptions o = parse_ok({});
@@ -76,19 +78,21 @@ TEST(Cli, Size) {
 }
 
 TEST(Cli, BadSizesAreConfigErrors) {
-    for (const char* bad : {"1280", "1280x", "x720", "axb", "1280*720", "1280x720x3", "1280x720 ", "8x8", "15x720",
-                            "1280x16385", "0x0"}) {
+    for (const char* bad : {"1280", "1280x", "x720", "axb", "1280*720", "1280x720x3", "1280x720 ", "8x8",
+                            "15x720", "1280x16385", "0x0"}) {
         const Error e = parse_error({"--size", bad});
         EXPECT_EQ(e.code, ExitCode::Config) << bad;
         EXPECT_EQ(static_cast<int>(e.code), 2);
-        EXPECT_EQ(e.message, fmt::format("--size {}: expected WIDTHxHEIGHT, e.g. 1280x720 (16 to 16384 each)", bad));
+        EXPECT_EQ(e.message,
+                  fmt::format("--size {}: expected WIDTHxHEIGHT, e.g. 1280x720 (16 to 16384 each)", bad));
     }
 }
 
 TEST(Cli, SetIsRepeatableAndKeepsOrder) {
-    const CliOptions o = parse_ok({"--set", "rain.drop_count=20", "-s", "water.turbidity=0.2", "--set",
-                                   "rain.drop_count=30"});
-    EXPECT_EQ(o.sets, (std::vector<std::string>{"rain.drop_count=20", "water.turbidity=0.2", "rain.drop_count=30"}));
+    const CliOptions o =
+        parse_ok({"--set", "rain.drop_count=20", "-s", "water.turbidity=0.2", "--set", "rain.drop_count=30"});
+    EXPECT_EQ(o.sets,
+              (std::vector<std::string>{"rain.drop_count=20", "water.turbidity=0.2", "rain.drop_count=30"}));
 }
 
 TEST(Cli, SetValuesAreNotCheckedHere) {
@@ -119,9 +123,9 @@ TEST(Cli, Seed) {
 }
 
 TEST(Cli, OtherOptions) {
-    const CliOptions o = parse_ok({"--config", "/etc/puddle/puddle.toml", "--list-params", "--print-config",
-                                   "--fullscreen", "--screenshot", "out.png", "--fps-cap", "30", "--log-level",
-                                   "debug"});
+    const CliOptions o =
+        parse_ok({"--config", "/etc/puddle/puddle.toml", "--list-params", "--print-config", "--fullscreen",
+                  "--screenshot", "out.png", "--fps-cap", "30", "--log-level", "debug"});
     EXPECT_EQ(o.config_path, "/etc/puddle/puddle.toml");
     EXPECT_TRUE(o.list_params);
     EXPECT_TRUE(o.print_config);

@@ -1,13 +1,12 @@
 // The real binary, as a person runs it: renders a PNG headless, and fails clearly on bad input.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-
-#include <sys/wait.h>
 
 #include "assets/image_io.hpp"
 #include "support/test_support.hpp"
@@ -120,11 +119,13 @@ TEST(EndToEnd, RunWithoutImageFilesNeverLoadsOpenImageIO) {
     const CommandResult plain = run_command(run + " --screenshot " + shot);
     ASSERT_EQ(plain.exit_code, 0) << plain.output;
     EXPECT_TRUE(std::filesystem::exists(shot));
-    EXPECT_NE(plain.output.find("file=libEGL"), std::string::npos) << "LD_DEBUG lists libraries:\n" << plain.output;
+    EXPECT_NE(plain.output.find("file=libEGL"), std::string::npos) << "LD_DEBUG lists libraries:\n"
+                                                                   << plain.output;
     EXPECT_EQ(plain.output.find("libpuddle-images"), std::string::npos) << plain.output;
     EXPECT_EQ(plain.output.find("libOpenImageIO"), std::string::npos) << plain.output;
 
-    const CommandResult image = run_command(run + " --set ground.checkerboard=false --set ground.image=" + shot);
+    const CommandResult image =
+        run_command(run + " --set ground.checkerboard=false --set ground.image=" + shot);
     ASSERT_EQ(image.exit_code, 0) << image.output;
     EXPECT_NE(image.output.find("libOpenImageIO"), std::string::npos) << image.output;
 }
@@ -136,13 +137,15 @@ TEST(EndToEnd, EnvironmentOfTheWrongShapeExitsThreeNamingPathAndShape) {
     ASSERT_TRUE(assets::write_png(cross, assets::Image::make(1022, 768)).ok());
     const CommandResult panorama = run_puddle("-b headless --frames 1 --set environment.image=" + wide);
     EXPECT_EQ(panorama.exit_code, 3) << panorama.output;
-    EXPECT_NE(panorama.output.find(wide + " is 300x200: expected an equirectangular panorama twice as wide as high"),
+    EXPECT_NE(panorama.output.find(wide +
+                                   " is 300x200: expected an equirectangular panorama twice as wide as high"),
               std::string::npos)
         << panorama.output;
     const CommandResult bad_cross = run_puddle("-b headless --frames 1 --set environment.image=" + cross);
     EXPECT_EQ(bad_cross.exit_code, 3) << bad_cross.output;
-    EXPECT_NE(bad_cross.output.find(cross + " is 1022x768: a horizontal cube cross must be 4 square faces wide"),
-              std::string::npos)
+    EXPECT_NE(
+        bad_cross.output.find(cross + " is 1022x768: a horizontal cube cross must be 4 square faces wide"),
+        std::string::npos)
         << bad_cross.output;
 }
 

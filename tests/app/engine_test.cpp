@@ -30,18 +30,22 @@ const std::vector<std::string> binary_schedule = {
     "input/frame clock (reads FrameTime, Params; writes FrameClock)",
     "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
     "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
-    "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, AnalyticRipples, "
+    "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, "
+    "AnalyticRipples, "
     "GridDrops, ShownLook)",
     "input/camera feed (reads Params, FrameTime; writes CameraFeed, Device, CameraEnvironment)",
     "simulate/begin step (writes FrameClock)",
-    "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, LiveDrops)",
+    "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, "
+    "LiveDrops)",
     "simulate/wave if the wave field is in use (reads Params, LiveDrops; writes Device, WaveField)",
     "render/surface if the wave field is in use (reads WaveField; writes Device, Surface)",
     "render/camera environment (reads Params, Environment; writes Device, CameraEnvironment)",
-    "render/analytic ripples if drops are analytic (reads Params, FrameClock; writes Device, AnalyticRipples, "
+    "render/analytic ripples if drops are analytic (reads Params, FrameClock; writes Device, "
+    "AnalyticRipples, "
     "Surface)",
     "render/grid drops if drops are grid (reads Params, FrameClock; writes Device, GridDrops, Surface)",
-    "render/puddle if look is puddle (reads Params, Surface, Environment, Ground, RenderTarget, CameraEnvironment; "
+    "render/puddle if look is puddle (reads Params, Surface, Environment, Ground, RenderTarget, "
+    "CameraEnvironment; "
     "writes Device, PuddleRenderer)",
     "render/ocean if look is ocean (reads Params, FrameClock, RenderTarget; writes Device, OceanRenderer)",
     "render/street if look is street (reads Params, FrameClock, RenderTarget; writes Device, StreetRenderer)",
@@ -70,8 +74,12 @@ struct Counts {
     int frames = 0;
     int exits = 0;
 };
-void count_frame(Counts& c) { ++c.frames; }
-void count_exit(Counts& c) { ++c.exits; }
+void count_frame(Counts& c) {
+    ++c.frames;
+}
+void count_exit(Counts& c) {
+    ++c.exits;
+}
 
 TEST(Engine, WithoutFeaturesItRunsOnlyTheDisplaysSystemsAndPresents) {
     Counts* counts = nullptr;
@@ -104,10 +112,10 @@ TEST(Engine, WithoutFeaturesItRunsOnlyTheDisplaysSystemsAndPresents) {
 }
 
 TEST(Engine, APluginErrorStopsCreationWithItsMessage) {
-    auto engine = Engine::create(params::Params{}, headless(), {},
-                                 {[](ecs::World&, ecs::Schedule&) -> Result<void> {
-                                     return Error{"sky: cannot open /x.hdr", ExitCode::Asset};
-                                 }});
+    auto engine =
+        Engine::create(params::Params{}, headless(), {}, {[](ecs::World&, ecs::Schedule&) -> Result<void> {
+                           return Error{"sky: cannot open /x.hdr", ExitCode::Asset};
+                       }});
     ASSERT_FALSE(engine.ok());
     EXPECT_EQ(engine.error().code, ExitCode::Asset);
     EXPECT_EQ(engine.error().message, "sky: cannot open /x.hdr");
@@ -122,7 +130,8 @@ TEST(Engine, ACapturedFrameIsTheFrameReadBack) {
     const assets::Image captured = e.take_captured();
     ASSERT_EQ(captured.width, 48);
     ASSERT_EQ(captured.height, 32);
-    EXPECT_EQ(captured.data, e.read_frame().data) << "headless keeps the frame: the capture is the same pixels";
+    EXPECT_EQ(captured.data, e.read_frame().data)
+        << "headless keeps the frame: the capture is the same pixels";
     EXPECT_GT(test::luma_stddev(captured, 0, 0, 48, 32), 1.0) << "the puddle, not an empty target";
 }
 
@@ -130,7 +139,8 @@ TEST(Engine, DebugLoggingPrintsTheScheduleOnceAtStartUp) {
     const test::CommandResult r = test::run_puddle("-b headless --size 32x18 --frames 3 --log-level debug");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     std::size_t lines = 0;
-    for (std::size_t at = r.output.find("schedule: "); at != std::string::npos; at = r.output.find("schedule: ", at + 1))
+    for (std::size_t at = r.output.find("schedule: "); at != std::string::npos;
+         at = r.output.find("schedule: ", at + 1))
         ++lines;
     EXPECT_EQ(lines, binary_schedule.size()) << r.output;
     EXPECT_NE(r.output.find("schedule: " + binary_schedule.front()), std::string::npos) << r.output;

@@ -4,9 +4,8 @@
 //
 // Only C++ allocations are counted (operator new, which our code, the standard library, spdlog and fmt
 // go through); Mesa's own C allocations inside the GL driver are the driver's business.
-#include <gtest/gtest.h>
-
 #include <execinfo.h>
+#include <gtest/gtest.h>
 
 #include <array>
 #include <atomic>
@@ -35,7 +34,8 @@ void note_allocation() {
     const long n = allocations.fetch_add(1);
     if (n < max_traces) {
         in_hook = true;
-        depths[static_cast<std::size_t>(n)] = backtrace(traces[static_cast<std::size_t>(n)].data(), max_depth);
+        depths[static_cast<std::size_t>(n)] =
+            backtrace(traces[static_cast<std::size_t>(n)].data(), max_depth);
         in_hook = false;
     }
 }
@@ -57,22 +57,46 @@ void* operator new(std::size_t n) {
     if (void* p = counted(n)) return p;
     throw std::bad_alloc();
 }
-void* operator new[](std::size_t n) { return operator new(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
+void* operator new[](std::size_t n) {
+    return operator new(n);
+}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    return counted(n);
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+    return counted(n);
+}
 void* operator new(std::size_t n, std::align_val_t a) {
     if (void* p = counted(n, static_cast<std::size_t>(a))) return p;
     throw std::bad_alloc();
 }
-void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void* operator new[](std::size_t n, std::align_val_t a) {
+    return operator new(n, a);
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
 
 namespace puddle::test {
 namespace {
@@ -94,7 +118,8 @@ public:
 void print_traces(long count) {
     for (long i = 0; i < std::min<long>(count, max_traces); ++i) {
         std::fprintf(stderr, "--- allocation %ld:\n", i + 1);
-        backtrace_symbols_fd(traces[static_cast<std::size_t>(i)].data(), depths[static_cast<std::size_t>(i)], 2);
+        backtrace_symbols_fd(traces[static_cast<std::size_t>(i)].data(), depths[static_cast<std::size_t>(i)],
+                             2);
     }
 }
 
@@ -114,7 +139,8 @@ void expect_no_allocation_in_frames(app::Engine& engine, app::FrameStats& stats)
     }
     const long allocated = count.stop();
     if (allocated) print_traces(allocated);
-    EXPECT_EQ(allocated, 0) << "heap allocations in " << counted_frames << " steady-state frames (stacks on stderr)";
+    EXPECT_EQ(allocated, 0) << "heap allocations in " << counted_frames
+                            << " steady-state frames (stacks on stderr)";
 }
 
 TEST(FrameAllocation, TheCounterSeesAllocations) {  // else a zero below would prove nothing
@@ -134,12 +160,13 @@ TEST(FrameAllocation, SteadyStateFramesWithLiveTuningAllocateNothing) {
     platform::DisplayOptions display;
     display.backend = platform::BackendKind::Headless;
     display.size = {160, 90};
-    auto engine = app::Engine::create(params::Params{}, display, {},
-                                      {[](ecs::World& world, ecs::Schedule& schedule) {
-                                           return systems::add_live_tuning(
-                                               world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
-                                       },
-                                       systems::add_puddle_plugin});
+    auto engine =
+        app::Engine::create(params::Params{}, display, {},
+                            {[](ecs::World& world, ecs::Schedule& schedule) {
+                                 return systems::add_live_tuning(
+                                     world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
+                             },
+                             systems::add_puddle_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
     app::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);

@@ -39,13 +39,16 @@ TEST(LiveTuningEndToEnd, TurningAKnobChangesTheParameterThePictureAndTheSavedSta
     const std::string turned = dir.write("turned.txt", turn_script(4));
     const std::string common = "-b headless --size 160x90 --frames 20 --seed 3 --config " + config;
 
-    const auto still_run = run_puddle(common + " --gpio mock:" + still + " --state " + (dir / "s0.toml").string() +
-                                      " --screenshot " + (dir / "still.png").string());
+    const auto still_run =
+        run_puddle(common + " --gpio mock:" + still + " --state " + (dir / "s0.toml").string() +
+                   " --screenshot " + (dir / "still.png").string());
     ASSERT_EQ(still_run.exit_code, 0) << still_run.output;
-    const auto turned_run = run_puddle(common + " --gpio mock:" + turned + " --state " + (dir / "s1.toml").string() +
-                                       " --screenshot " + (dir / "turned.png").string());
+    const auto turned_run =
+        run_puddle(common + " --gpio mock:" + turned + " --state " + (dir / "s1.toml").string() +
+                   " --screenshot " + (dir / "turned.png").string());
     ASSERT_EQ(turned_run.exit_code, 0) << turned_run.output;
-    EXPECT_NE(turned_run.output.find("knob: look.vignette 0.5 -> 1.3 (knob)"), std::string::npos) << turned_run.output;
+    EXPECT_NE(turned_run.output.find("knob: look.vignette 0.5 -> 1.3 (knob)"), std::string::npos)
+        << turned_run.output;
 
     auto a = assets::read_image((dir / "still.png").string());
     auto b = assets::read_image((dir / "turned.png").string());
@@ -59,16 +62,19 @@ TEST(LiveTuningEndToEnd, TurningAKnobChangesTheParameterThePictureAndTheSavedSta
     EXPECT_NE(state.find("[look]\nvignette = 1.3"), std::string::npos) << state;
 
     // The next start restores it.
-    const auto restored = run_puddle("--config " + config + " --state " + (dir / "s1.toml").string() + " --print-config");
+    const auto restored =
+        run_puddle("--config " + config + " --state " + (dir / "s1.toml").string() + " --print-config");
     ASSERT_EQ(restored.exit_code, 0);
-    EXPECT_NE(restored.output.find("look.vignette              = 1.3                      # knob"), std::string::npos)
+    EXPECT_NE(restored.output.find("look.vignette              = 1.3                      # knob"),
+              std::string::npos)
         << restored.output;
 }
 
 TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne) {
     TempDir dir;
     const std::string config = dir.write("puddle.toml", "[rain]\ndrop_count = 10\n");
-    Running puddle({"-b", "headless", "--size", "64x36", "--frames", "0", "--config", config}, dir / "log.txt");
+    Running puddle({"-b", "headless", "--size", "64x36", "--frames", "0", "--config", config},
+                   dir / "log.txt");
     ASSERT_TRUE(puddle.ok());
     ASSERT_TRUE(puddle.wait_for("headless: EGL")) << puddle.log();  // watching, and running frames now
 
@@ -81,9 +87,7 @@ TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne)
     EXPECT_NE(puddle.log().find("puddle.toml:2: rain.drop_count = 400"), std::string::npos) << puddle.log();
 
     // SIGHUP reloads too (a valid file again).
-    {
-        std::ofstream(config) << "[rain]\ndrop_count = 12\n";
-    }
+    { std::ofstream(config) << "[rain]\ndrop_count = 12\n"; }
     ASSERT_TRUE(puddle.wait_for("rain.drop_count 40 -> 12")) << puddle.log();
     EXPECT_EQ(puddle.count("wave: 512x512 field"), 1) << "reloads did not restart the ripples";
     const int reloads = puddle.count("config: reloaded");

@@ -1,7 +1,6 @@
 // The real binary under a systemd-like notify socket: READY once a frame is shown, watchdog pings
 // while frames flow, STOPPING at the end.
 #include <gtest/gtest.h>
-
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <sys/wait.h>
@@ -10,8 +9,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <thread>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "support/test_support.hpp"
@@ -38,10 +37,13 @@ TEST(ServiceEndToEnd, NotifiesReadyPingsTheWatchdogAndSaysStopping) {
         char msg[512];
         while (!done) {
             const ssize_t n = ::recv(fd, msg, sizeof msg, 0);
-            if (n > 0) got.emplace_back(msg, static_cast<std::size_t>(n));
-            else std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            if (n > 0)
+                got.emplace_back(msg, static_cast<std::size_t>(n));
+            else
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
-        for (ssize_t n; (n = ::recv(fd, msg, sizeof msg, 0)) > 0;) got.emplace_back(msg, static_cast<std::size_t>(n));
+        for (ssize_t n; (n = ::recv(fd, msg, sizeof msg, 0)) > 0;)
+            got.emplace_back(msg, static_cast<std::size_t>(n));
     });
     const CommandResult run = run_command(cmd);
     done = true;
@@ -53,7 +55,8 @@ TEST(ServiceEndToEnd, NotifiesReadyPingsTheWatchdogAndSaysStopping) {
     EXPECT_EQ(got.front().rfind("READY=1", 0), 0u) << got.front();
     EXPECT_EQ(got.back(), "STOPPING=1");
     for (std::size_t i = 1; i + 1 < got.size(); ++i) EXPECT_EQ(got[i], "WATCHDOG=1");
-    EXPECT_NE(out.find("systemd: READY after the first frame, watchdog every 0.005 s"), std::string::npos) << out;
+    EXPECT_NE(out.find("systemd: READY after the first frame, watchdog every 0.005 s"), std::string::npos)
+        << out;
 }
 
 }  // namespace

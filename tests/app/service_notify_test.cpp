@@ -1,7 +1,9 @@
 // The systemd notify protocol (app/service_notify.hpp): READY after the first frame, watchdog pings only
 // while frames are presented, abstract socket names, and nothing at all outside systemd.
-#include <gtest/gtest.h>
+#include "app/service_notify.hpp"
 
+#include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
@@ -9,16 +11,13 @@
 
 #include <cstddef>
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
-#include <spdlog/spdlog.h>
-
-#include "app/service_notify.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::app {
@@ -40,7 +39,8 @@ public:
     std::vector<std::string> received() {
         std::vector<std::string> out;
         char buf[512];
-        for (ssize_t n; (n = ::recv(fd_, buf, sizeof buf, 0)) > 0;) out.emplace_back(buf, static_cast<std::size_t>(n));
+        for (ssize_t n; (n = ::recv(fd_, buf, sizeof buf, 0)) > 0;)
+            out.emplace_back(buf, static_cast<std::size_t>(n));
         return out;
     }
 
@@ -104,7 +104,8 @@ TEST(ServiceNotify, AbstractSocketNamesWork) {
     addr.sun_family = AF_UNIX;
     std::memcpy(addr.sun_path + 1, name.data(), name.size());
     ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&addr),
-                     static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + 1 + name.size())), 0);
+                     static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + 1 + name.size())),
+              0);
     test::ScopedEnv socket("NOTIFY_SOCKET", "@" + name);
     ServiceNotify n = ServiceNotify::from_environment();
     n.frame_presented(1.0);

@@ -1,11 +1,12 @@
 // The per-pixel cost estimate the benchmark prints (bench/shader_cost.hpp): exact counts on small shaders,
 // and the orderings that matter on the real one.
+#include "bench/shader_cost.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "bench/shader_cost.hpp"
 #include "gpu/shader_source.hpp"
 #include "params/param_store.hpp"
 #include "systems/puddle_variant.hpp"
@@ -35,7 +36,8 @@ TEST(ShaderCost, CountsUserFunctionsAtEveryCallAndLoopsByTripCount) {
         })");
     EXPECT_EQ(c.texture_fetches, 5);
     EXPECT_EQ(c.alu_ops, 1 + 4 * 2);
-    EXPECT_EQ(estimate_shader_cost("void main() { for (int i = 0; i < 64; ++i) { x += 1.0; } }", 14).alu_ops, 14);
+    EXPECT_EQ(estimate_shader_cost("void main() { for (int i = 0; i < 64; ++i) { x += 1.0; } }", 14).alu_ops,
+              14);
 }
 
 TEST(ShaderCost, FollowsTheVariantsDefines) {
@@ -59,8 +61,9 @@ TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     v.raymarch = true;
     auto raymarch = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
     ASSERT_TRUE(intersect.ok() && raymarch.ok());
-    const ShaderCost i = estimate_shader_cost(intersect->source, 14), r = estimate_shader_cost(raymarch->source, 14);
-    EXPECT_EQ(i.texture_fetches, 2);  // the surface once, the sky once (reflected or direct)
+    const ShaderCost i = estimate_shader_cost(intersect->source, 14),
+                     r = estimate_shader_cost(raymarch->source, 14);
+    EXPECT_EQ(i.texture_fetches, 2);   // the surface once, the sky once (reflected or direct)
     EXPECT_GT(r.texture_fetches, 14);  // a surface read per march step
     EXPECT_GT(r.alu_ops, i.alu_ops);
 }
@@ -73,8 +76,8 @@ TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
         auto s = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
         return s ? estimate_shader_cost(s->source, 14) : ShaderCost{};
     };
-    const ShaderCost checker = cost(systems::GroundKind::Checkerboard), image = cost(systems::GroundKind::Image),
-                     hidden = cost(systems::GroundKind::Hidden);
+    const ShaderCost checker = cost(systems::GroundKind::Checkerboard),
+                     image = cost(systems::GroundKind::Image), hidden = cost(systems::GroundKind::Hidden);
     EXPECT_EQ(image.texture_fetches, checker.texture_fetches + 1);
     EXPECT_EQ(hidden.texture_fetches, checker.texture_fetches);
     EXPECT_LT(hidden.alu_ops, checker.alu_ops);

@@ -22,8 +22,8 @@
 #include <mutex>
 #include <optional>
 #include <set>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "camera/v4l2_io.hpp"

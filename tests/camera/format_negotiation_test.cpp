@@ -47,7 +47,8 @@ TEST(FormatNegotiation, DeviceOfferListsTheFormatsAndClosesTheDevice) {
     dev.unplug();
     auto gone = device_offer(dev, "/dev/video0");
     ASSERT_FALSE(gone);
-    EXPECT_NE(gone.error().message.find("/dev/video0: cannot open"), std::string::npos) << gone.error().message;
+    EXPECT_NE(gone.error().message.find("/dev/video0: cannot open"), std::string::npos)
+        << gone.error().message;
 }
 
 TEST(FormatNegotiation, FourccNames) {

@@ -16,7 +16,8 @@ TEST(Package, DebHoldsBinaryConfigPresetsUnitUdevRuleAndUser) {
         if (run_command(std::string("command -v ") + tool).exit_code != 0)
             GTEST_SKIP() << tool << " is not installed (deploy/setup.sh installs it: cmake, dpkg-dev)";
     TempDir dir;
-    const auto cpack = run_command("cd " + std::string(PUDDLE_BUILD_DIR) + " && cpack -G DEB -B " + dir.path().string());
+    const auto cpack =
+        run_command("cd " + std::string(PUDDLE_BUILD_DIR) + " && cpack -G DEB -B " + dir.path().string());
     ASSERT_EQ(cpack.exit_code, 0) << cpack.output;
     const std::string& log = cpack.output;
     std::string deb;
@@ -26,11 +27,11 @@ TEST(Package, DebHoldsBinaryConfigPresetsUnitUdevRuleAndUser) {
     EXPECT_NE(deb.find("puddle_"), std::string::npos) << deb;
 
     const std::string contents = run_command("dpkg-deb --contents " + deb).output;
-    for (const char* path : {"./usr/bin/puddle", "./usr/lib/puddle/libpuddle-images.so", "./etc/puddle/puddle.toml",
-                             "./usr/share/puddle/presets/downpour.toml",
-                             "./usr/share/puddle/presets/still_night.toml", "./usr/lib/systemd/system/puddle.service",
-                             "./usr/lib/udev/rules.d/99-puddle-gpio.rules", "./usr/lib/sysusers.d/puddle.conf",
-                             "./usr/share/doc/puddle/README.md"})
+    for (const char* path :
+         {"./usr/bin/puddle", "./usr/lib/puddle/libpuddle-images.so", "./etc/puddle/puddle.toml",
+          "./usr/share/puddle/presets/downpour.toml", "./usr/share/puddle/presets/still_night.toml",
+          "./usr/lib/systemd/system/puddle.service", "./usr/lib/udev/rules.d/99-puddle-gpio.rules",
+          "./usr/lib/sysusers.d/puddle.conf", "./usr/share/doc/puddle/README.md"})
         EXPECT_NE(contents.find(path), std::string::npos) << path << " missing from:\n" << contents;
 
     const std::string info = run_command("dpkg-deb --info " + deb).output;
@@ -39,7 +40,8 @@ TEST(Package, DebHoldsBinaryConfigPresetsUnitUdevRuleAndUser) {
     EXPECT_NE(info.find("libegl1"), std::string::npos) << info;
     EXPECT_NE(info.find("libopenimageio"), std::string::npos) << "the image module's library:\n" << info;
     EXPECT_EQ(run_command("dpkg-deb --field " + deb + " Package").output, "puddle\n");
-    const std::string conffiles = run_command("dpkg-deb --ctrl-tarfile " + deb + " | tar -xO ./conffiles").output;
+    const std::string conffiles =
+        run_command("dpkg-deb --ctrl-tarfile " + deb + " | tar -xO ./conffiles").output;
     EXPECT_EQ(conffiles, "/etc/puddle/puddle.toml\n");
 }
 

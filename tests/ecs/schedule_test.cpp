@@ -1,10 +1,10 @@
 // Tests for src/ecs/schedule.hpp: fixed stage order, the fixed-step simulate stage, registration order.
 #include "ecs/schedule.hpp"
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace puddle::ecs {
 namespace {
@@ -54,7 +54,8 @@ TEST_F(ScheduleTest, SimulateRunsAsOftenAsTheStepCounterSays) {
     schedule.add_system(Stage::Present, "present", record("present"));
     schedule.set_step_counter([](World&) { return 3; });
     schedule.run_frame(world);
-    EXPECT_EQ(calls(), (std::vector<std::string>{"input", "a", "b", "a", "b", "a", "b", "render", "present"}));
+    EXPECT_EQ(calls(),
+              (std::vector<std::string>{"input", "a", "b", "a", "b", "a", "b", "render", "present"}));
 }
 
 TEST_F(ScheduleTest, StepCounterIsReadAfterTheInputStage) {
@@ -70,7 +71,8 @@ TEST_F(ScheduleTest, StepCounterIsReadAfterTheInputStage) {
 
     schedule.run_frame(world);  // 1 step
     schedule.run_frame(world);  // 2 steps
-    EXPECT_EQ(calls(), (std::vector<std::string>{"clock", "step", "render", "clock", "step", "step", "render"}));
+    EXPECT_EQ(calls(),
+              (std::vector<std::string>{"clock", "step", "render", "clock", "step", "step", "render"}));
 }
 
 TEST_F(ScheduleTest, ZeroStepsSkipsSimulateButStillRendersAndPresents) {
@@ -140,8 +142,12 @@ struct Tick {
 void move_system(const Speed& speed, const Tick& tick, Position& position) {
     position.metres += speed.metres_per_second * tick.seconds;
 }
-void spawn_system(World& world, const Speed&) { world.spawn(); }
-void trace_system(Trace& trace) { trace.calls.push_back("trace"); }
+void spawn_system(World& world, const Speed&) {
+    world.spawn();
+}
+void trace_system(Trace& trace) {
+    trace.calls.push_back("trace");
+}
 
 TEST_F(ScheduleTest, APlainFunctionGetsItsResourcesByType) {
     world.insert_resource<Speed>(Speed{3.0});
@@ -201,7 +207,8 @@ TEST_F(ScheduleTest, RunConditionsAreCheckedEveryRunAndAllMustHold) {
     world.resource<Gate>().second = false;
     schedule.run_frame(world);
     EXPECT_EQ(calls().size(), 1u);
-    EXPECT_EQ(schedule.describe(), (std::vector<std::string>{"render/trace if gate open and second open (writes Trace)"}));
+    EXPECT_EQ(schedule.describe(),
+              (std::vector<std::string>{"render/trace if gate open and second open (writes Trace)"}));
 }
 
 TEST_F(ScheduleTest, TheExitStageRunsOnlyWhenAskedAndOnce) {

@@ -1,13 +1,13 @@
 // Tests for src/ecs/world.hpp: entities and generations, sparse-set component storage, resources.
 #include "ecs/world.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <memory>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace puddle::ecs {
 namespace {

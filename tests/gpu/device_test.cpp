@@ -39,8 +39,9 @@ std::optional<Result<Pipeline>> wait_for(Device& device, PipelineRequest& reques
 }
 
 std::vector<std::uint8_t> draw(Device& device, const Pipeline& pipeline) {
-    Texture t = device.create_texture({.label = "target", .format = TextureFormat::RGBA8, .width = 64, .height = 32})
-                    .value();
+    Texture t =
+        device.create_texture({.label = "target", .format = TextureFormat::RGBA8, .width = 64, .height = 32})
+            .value();
     device.begin_pass({.label = "draw", .target = {&t, {64, 32}}, .load = LoadOp::Clear})
         .set_pipeline(pipeline)
         .set("u_aspect", 2.0f)
@@ -67,7 +68,8 @@ TEST_F(DeviceTest, APipelineLinkedOnTheWorkerDrawsAsOneLinkedHere) {
               std::vector<std::string>(here->uniform_names().begin(), here->uniform_names().end()));
     const auto worker_pixels = draw(*device_, built->value()), here_pixels = draw(*device_, *here);
     EXPECT_EQ(worker_pixels, here_pixels);
-    EXPECT_NE(std::count(worker_pixels.begin(), worker_pixels.end(), 0), std::ptrdiff_t(worker_pixels.size()));
+    EXPECT_NE(std::count(worker_pixels.begin(), worker_pixels.end(), 0),
+              std::ptrdiff_t(worker_pixels.size()));
 }
 
 TEST_F(DeviceTest, ACompileErrorOnTheWorkerNamesTheShaderFileAndLine) {

@@ -1,16 +1,17 @@
 // Shader assembly: #version first, variant #defines, #include spliced with #line so that a driver's
 // "FILE:LINE" points back at the right file.
+#include "gpu/shader_source.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
-
-#include "gpu/shader_source.hpp"
 
 namespace puddle::gpu {
 namespace {
 
 std::string_view fake_files(std::string_view name) {
-    if (name == "main.frag") return "#version 300 es\nprecision highp float;\n#include \"lib.glsl\"\nvoid main() {}\n";
+    if (name == "main.frag")
+        return "#version 300 es\nprecision highp float;\n#include \"lib.glsl\"\nvoid main() {}\n";
     if (name == "lib.glsl") return "float f() { return 1.0; }\n";
     if (name == "loop.glsl") return "#include \"loop.glsl\"\n";
     return {};
@@ -48,7 +49,8 @@ TEST(ShaderSource, MissingFilesAndIncludeLoopsAreErrors) {
 }
 
 TEST(ShaderSource, EveryEmbeddedShaderIsThere) {
-    for (const char* name : {"fullscreen.vert", "wave_step.frag", "surface.frag", "puddle.frag", "floor.frag"}) {
+    for (const char* name :
+         {"fullscreen.vert", "wave_step.frag", "surface.frag", "puddle.frag", "floor.frag"}) {
         auto s = assemble_shader(name, {});
         EXPECT_TRUE(s.ok()) << name;
     }

@@ -1,7 +1,7 @@
 // Button debounce by edge timestamps.
-#include <gtest/gtest.h>
-
 #include "io/debouncer.hpp"
+
+#include <gtest/gtest.h>
 
 namespace puddle::io {
 namespace {

@@ -1,14 +1,14 @@
 // Knobs on the mock GPIO backend: the same Knob code that runs on libgpiod.
+#include "io/knob.hpp"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
 
-#include <fmt/format.h>
-
 #include "io/gpio_mock.hpp"
-#include "io/knob.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::io {
@@ -82,8 +82,8 @@ TEST(Knob, AccelerationGrowsTheStepForFastTurnsOnly) {
     Rig rig;
     Knob knob(encoder(0.05, 1.0));
     knob.update(rig.gpio, 1.0, rig.actions);
-    turn_clockwise(rig.gpio, 2.0);  // slow: a second after nothing
-    turn_clockwise(rig.gpio, 3.0);  // 1 detent/s: no gain
+    turn_clockwise(rig.gpio, 2.0);                                          // slow: a second after nothing
+    turn_clockwise(rig.gpio, 3.0);                                          // 1 detent/s: no gain
     for (int i = 0; i < 4; ++i) turn_clockwise(rig.gpio, 3.05 + 0.05 * i);  // 20 detents/s
     knob.update(rig.gpio, 4.0, rig.actions);
     ASSERT_EQ(rig.actions.size(), 6u);

@@ -1,10 +1,10 @@
 // The encoder decoder: clean turns both ways, contact bounce, missed edges.
+#include "io/quadrature_decoder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <utility>
 #include <vector>
-
-#include "io/quadrature_decoder.hpp"
 
 namespace puddle::io {
 namespace {
@@ -41,8 +41,9 @@ TEST(QuadratureDecoder, ContactBounceDoesNotAddOrLoseDetents) {
     QuadratureDecoder d;
     d.reset(true, true);
     // A bounces three times before settling low, B bounces when it falls; still one detent.
-    const std::vector<Levels> bouncy{{false, true}, {true, true}, {false, true}, {true, true}, {false, true},
-                                     {false, false}, {false, true}, {false, false}, {true, false}, {true, true}};
+    const std::vector<Levels> bouncy{{false, true}, {true, true},   {false, true}, {true, true},
+                                     {false, true}, {false, false}, {false, true}, {false, false},
+                                     {true, false}, {true, true}};
     EXPECT_EQ(feed(d, bouncy), 1);
 }
 
@@ -74,8 +75,10 @@ TEST(QuadratureDecoder, EveryTransitionOfTheTable) {
             d.update(codes[to][0], codes[to][1]);
             const int moved = d.quarter_steps() - before;
             const int bits = (from ^ to) == 3 ? 2 : (from == to ? 0 : 1);
-            if (bits == 1) EXPECT_EQ(std::abs(moved), 1) << from << "->" << to;
-            else EXPECT_EQ(moved, 0) << from << "->" << to;
+            if (bits == 1)
+                EXPECT_EQ(std::abs(moved), 1) << from << "->" << to;
+            else
+                EXPECT_EQ(moved, 0) << from << "->" << to;
         }
 }
 

@@ -62,8 +62,8 @@ TEST(ParseConfig, ValidFileApplies) {
     ASSERT_EQ(c.entries.size(), 7u);
     // Each entry keeps its line number (toml++ tables are sorted by key, so the order is not the file's).
     const std::pair<ParamId, int> lines[] = {
-        {ParamId::rain_drop_count, 3},     {ParamId::rain_intensity, 4}, {ParamId::rain_speed, 5},
-        {ParamId::water_tint, 8},          {ParamId::ground_checkerboard, 11}, {ParamId::ground_image, 12},
+        {ParamId::rain_drop_count, 3}, {ParamId::rain_intensity, 4},       {ParamId::rain_speed, 5},
+        {ParamId::water_tint, 8},      {ParamId::ground_checkerboard, 11}, {ParamId::ground_image, 12},
         {ParamId::render_method, 15},
     };
     for (const auto& [id, line] : lines) {
@@ -117,12 +117,14 @@ TEST(ParseConfig, UnknownKeyNamesFileLineKeyAndSuggestion) {
     EXPECT_TRUE(has_text(e.message, "file.toml:3"));
     EXPECT_TRUE(has_text(e.message, "rain.drop_cont"));
     EXPECT_TRUE(has_text(e.message, "did you mean 'rain.drop_count'"));
-    EXPECT_EQ(e.message, "config: file.toml:3: unknown key 'rain.drop_cont' (did you mean 'rain.drop_count'?)");
+    EXPECT_EQ(e.message,
+              "config: file.toml:3: unknown key 'rain.drop_cont' (did you mean 'rain.drop_count'?)");
 }
 
 TEST(ParseConfig, UnknownSectionIsAnUnknownKey) {
     const Error e = config_error("[rian]\ndrop_count = 20\n");
-    EXPECT_EQ(e.message, "config: file.toml:2: unknown key 'rian.drop_count' (did you mean 'rain.drop_count'?)");
+    EXPECT_EQ(e.message,
+              "config: file.toml:2: unknown key 'rian.drop_count' (did you mean 'rain.drop_count'?)");
 }
 
 TEST(ParseConfig, OutOfRangeNamesFileLineKeyValueAndRange) {
@@ -131,11 +133,13 @@ TEST(ParseConfig, OutOfRangeNamesFileLineKeyValueAndRange) {
     EXPECT_TRUE(has_text(e.message, "rain.drop_count"));
     EXPECT_TRUE(has_text(e.message, "500"));
     EXPECT_TRUE(has_text(e.message, "from 1 to 128"));
-    EXPECT_EQ(e.message,
-              "config: file.toml:3: rain.drop_count = 500 is out of range: allowed an integer from 1 to 128 drops");
+    EXPECT_EQ(
+        e.message,
+        "config: file.toml:3: rain.drop_count = 500 is out of range: allowed an integer from 1 to 128 drops");
 
     const Error f = config_error("[wave]\ndamping = 1.5\n");
-    EXPECT_EQ(f.message, "config: file.toml:2: wave.damping = 1.5 is out of range: allowed a number from 0.9 to 1");
+    EXPECT_EQ(f.message,
+              "config: file.toml:2: wave.damping = 1.5 is out of range: allowed a number from 0.9 to 1");
 
     const Error c = config_error("[water]\ntint = [0.1, 2.0, 0.3]\n");
     EXPECT_TRUE(has_text(c.message, "file.toml:2"));
@@ -143,7 +147,8 @@ TEST(ParseConfig, OutOfRangeNamesFileLineKeyValueAndRange) {
     EXPECT_TRUE(has_text(c.message, "each from 0 to 1 rgb"));
 
     const Error m = config_error("[render]\nmethod = \"fast\"\n");
-    EXPECT_EQ(m.message, "config: file.toml:2: render.method = \"fast\" is not allowed: one of: intersect, raymarch");
+    EXPECT_EQ(m.message,
+              "config: file.toml:2: render.method = \"fast\" is not allowed: one of: intersect, raymarch");
 }
 
 TEST(ParseConfig, HugeIntegerIsOutOfRangeNotWrapped) {
@@ -238,27 +243,32 @@ TEST(ParseConfig, WrongTypeNamesFileLineAndExpectedType) {
 
     const Error f = config_error("[rain]\ndrop_count = 2.5\n");
     EXPECT_EQ(f.message,
-              "config: file.toml:2: rain.drop_count = 2.5 has the wrong type: expected an integer from 1 to 128 drops");
+              "config: file.toml:2: rain.drop_count = 2.5 has the wrong type: expected an integer from 1 to "
+              "128 drops");
 
     const Error b = config_error("[ground]\ncheckerboard = 1\n");
-    EXPECT_EQ(b.message, "config: file.toml:2: ground.checkerboard = 1 has the wrong type: expected true or false");
+    EXPECT_EQ(b.message,
+              "config: file.toml:2: ground.checkerboard = 1 has the wrong type: expected true or false");
 
     const Error c = config_error("[water]\n\n\ntint = [0.1, 0.2]\n");
     EXPECT_TRUE(has_text(c.message, "config: file.toml:4: water.tint = "));
-    EXPECT_TRUE(has_text(c.message, "has the wrong type: expected three numbers [x, y, z], each from 0 to 1 rgb"));
+    EXPECT_TRUE(
+        has_text(c.message, "has the wrong type: expected three numbers [x, y, z], each from 0 to 1 rgb"));
 
     const Error v = config_error("[camera]\nposition = [1, \"2\", 3]\n");
     EXPECT_TRUE(has_text(v.message, "file.toml:2: camera.position = "));
     EXPECT_TRUE(has_text(v.message, "has the wrong type: expected three numbers"));
 
     const Error p = config_error("[environment]\nimage = 3\n");
-    EXPECT_EQ(p.message, "config: file.toml:2: environment.image = 3 has the wrong type: expected text (path)");
+    EXPECT_EQ(p.message,
+              "config: file.toml:2: environment.image = 3 has the wrong type: expected text (path)");
 }
 
 TEST(ParseConfig, TopLevelKeyMustBeInASection) {
     const Error e = config_error("drop_count = 20\n");
-    EXPECT_EQ(e.message,
-              "config: file.toml:1: 'drop_count' must be inside a [section] (did you mean 'rain.drop_count'?)");
+    EXPECT_EQ(
+        e.message,
+        "config: file.toml:1: 'drop_count' must be inside a [section] (did you mean 'rain.drop_count'?)");
 }
 
 TEST(ParseConfig, TomlSyntaxErrorNamesFileAndLine) {
@@ -303,7 +313,8 @@ TEST(LoadConfigFile, MissingFileNamesPathAndCannotOpen) {
     EXPECT_EQ(r.error().code, ExitCode::Config);
     EXPECT_TRUE(has_text(r.error().message, "/nonexistent/puddle/none.toml"));
     EXPECT_TRUE(has_text(r.error().message, "cannot open"));
-    EXPECT_EQ(r.error().message, "config: /nonexistent/puddle/none.toml: cannot open: No such file or directory");
+    EXPECT_EQ(r.error().message,
+              "config: /nonexistent/puddle/none.toml: cannot open: No such file or directory");
 }
 
 TEST(LoadConfigFile, ReadsAFileAndUsesItsPathInMessages) {
@@ -349,7 +360,8 @@ TEST(ParseAssignment, Bad) {
     auto no_eq = parse_assignment("rain.drop_count");
     ASSERT_FALSE(no_eq);
     EXPECT_EQ(no_eq.error().code, ExitCode::Config);
-    EXPECT_EQ(no_eq.error().message, "--set rain.drop_count: expected name=value, e.g. --set rain.drop_count=20");
+    EXPECT_EQ(no_eq.error().message,
+              "--set rain.drop_count: expected name=value, e.g. --set rain.drop_count=20");
 
     auto unknown = parse_assignment("rain.drop_cont=3");
     ASSERT_FALSE(unknown);
@@ -365,7 +377,8 @@ TEST(ParseAssignment, Bad) {
 
     auto type = parse_assignment("ground.checkerboard=maybe");
     ASSERT_FALSE(type);
-    EXPECT_EQ(type.error().message, "--set: ground.checkerboard = \"maybe\" is not valid: expected true or false");
+    EXPECT_EQ(type.error().message,
+              "--set: ground.checkerboard = \"maybe\" is not valid: expected true or false");
 
     // Past int's range: refused as out of range, naming the value as written.
     auto seed = parse_assignment("rain.seed=4294967297");
@@ -405,8 +418,9 @@ TEST(ShippedConfig, ParsesAndSetsEveryParameterToItsDefault) {
         const ParamDecl& d = decl(e.id);
         ASSERT_NE(find_param(d.name), nullptr);
         EXPECT_EQ(++seen[e.id], 1) << d.name << " appears twice (line " << e.line << ")";
-        EXPECT_EQ(e.value, d.default_value) << path << ":" << e.line << ": " << d.name << " = "
-                                            << format_value(e.value) << ", default " << format_value(d.default_value);
+        EXPECT_EQ(e.value, d.default_value)
+            << path << ":" << e.line << ": " << d.name << " = " << format_value(e.value) << ", default "
+            << format_value(d.default_value);
     }
     for (const ParamDecl& d : param_decls()) {
         if (d.kind == ParamKind::Path) continue;

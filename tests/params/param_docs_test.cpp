@@ -1,13 +1,14 @@
 // Keeps README.md's parameter table equal to params::format_params_markdown(), so the documentation can
 // never drift from params.def.
+#include "params/param_docs.hpp"
+
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
-#include "params/param_docs.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::params {
@@ -86,8 +87,9 @@ TEST(ReadmeTable, MatchesTheRegistry) {
 
     const Section section = find_section(text.str());
     ASSERT_TRUE(section.found) << path << ": " << section.problem << how_to_fix(expected, out.string());
-    EXPECT_EQ(section.text, expected) << path << ": the parameter table is out of date with src/params/params.def."
-                                      << how_to_fix(expected, out.string());
+    EXPECT_EQ(section.text, expected)
+        << path << ": the parameter table is out of date with src/params/params.def."
+        << how_to_fix(expected, out.string());
 }
 
 // The table itself: one header, one separator, one row per parameter, in declaration order.
@@ -101,7 +103,8 @@ TEST(ReadmeTable, MarkdownHasOneRowPerParameter) {
     EXPECT_EQ(lines[1], "|---|---|---|---|---|");
     for (std::size_t i = 0; i < param_decls().size(); ++i) {
         const ParamDecl& d = param_decls()[i];
-        EXPECT_TRUE(lines[i + 2].starts_with(fmt::format("| `{}` | {} | ", d.name, kind_name(d.kind)))) << lines[i + 2];
+        EXPECT_TRUE(lines[i + 2].starts_with(fmt::format("| `{}` | {} | ", d.name, kind_name(d.kind))))
+            << lines[i + 2];
         EXPECT_TRUE(lines[i + 2].ends_with(fmt::format(" | {} |", d.help))) << lines[i + 2];
     }
     const ParamDecl& drops = decl(ParamId::rain_drop_count);

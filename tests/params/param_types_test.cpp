@@ -18,7 +18,8 @@ static_assert(std::is_same_v<decltype(std::declval<const Params&>().get<ParamId:
 static_assert(std::is_same_v<decltype(std::declval<const Params&>().get<ParamId::rain_speed>()), float>);
 static_assert(std::is_same_v<decltype(std::declval<const Params&>().get<ParamId::overlay_rain>()), bool>);
 static_assert(std::is_same_v<decltype(std::declval<const Params&>().get<ParamId::puddle_size>()), glm::vec3>);
-static_assert(std::is_same_v<decltype(std::declval<const Params&>().get<ParamId::ground_image>()), const std::string&>);
+static_assert(
+    std::is_same_v<decltype(std::declval<const Params&>().get<ParamId::ground_image>()), const std::string&>);
 static_assert(std::is_same_v<decltype(std::declval<const Params&>().get<ParamId::look_tonemap>()), Tonemap>);
 static_assert(choice_count<Tonemap> == 4);
 
@@ -37,9 +38,9 @@ std::vector<std::string> registry_choices(ParamId id) {
 TEST(ParamTypes, EveryEnumHasTheRegistrysChoicesInOrderAndItsDefault) {
     int enums = 0;
 #define PARAM(...)
-#define PARAM_ENUM(id, name, Type, def, CHOICES, help)                                              \
-    ++enums;                                                                                        \
-    EXPECT_EQ(names_of<Type>(), registry_choices(ParamId::id)) << name;                            \
+#define PARAM_ENUM(id, name, Type, def, CHOICES, help)                                                 \
+    ++enums;                                                                                           \
+    EXPECT_EQ(names_of<Type>(), registry_choices(ParamId::id)) << name;                                \
     EXPECT_EQ(std::get<std::string>(decl(ParamId::id).default_value), choice_name(Type::def)) << name; \
     EXPECT_EQ(Params().get<ParamId::id>(), Type::def) << name;
 #include "params/params.def"

@@ -2,12 +2,12 @@
 // of Params: param_store_test.cpp.
 #include "params/registry.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cctype>
 #include <set>
 #include <stdexcept>
 #include <string>
-
-#include <gtest/gtest.h>
 
 namespace puddle::params {
 namespace {
@@ -15,7 +15,8 @@ namespace {
 bool is_name_part(std::string_view s) {
     if (s.empty() || !std::islower(static_cast<unsigned char>(s.front()))) return false;
     for (char c : s)
-        if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
+        if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) ||
+              c == '_'))
             return false;
     return true;
 }
@@ -81,17 +82,28 @@ TEST(Registry, EveryDeclarationIsWellFormed) {
 
 TEST(Registry, ReferenceParametersExistWithTheirKinds) {
     const std::pair<std::string_view, ParamKind> expected[] = {
-        {"rain.drop_count", ParamKind::Int},        {"rain.intensity", ParamKind::Float},
-        {"rain.speed", ParamKind::Float},           {"wave.damping", ParamKind::Float},
-        {"water.reflectivity", ParamKind::Float},   {"look.vignette", ParamKind::Float},
-        {"look.fog_density", ParamKind::Float},     {"environment.rotation", ParamKind::Float},
-        {"ground.checkerboard", ParamKind::Bool},   {"ground.scale", ParamKind::Float},
-        {"water.turbidity", ParamKind::Float},      {"puddle.depth", ParamKind::Float},
-        {"water.tint", ParamKind::Color},           {"camera.position", ParamKind::Vec3},
-        {"camera.target", ParamKind::Vec3},         {"camera.fov", ParamKind::Float},
-        {"puddle.size", ParamKind::Vec3},           {"wave.resolution", ParamKind::Int},
-        {"wave.steps_per_second", ParamKind::Float}, {"water.normal_strength", ParamKind::Float},
-        {"rain.seed", ParamKind::Int},              {"environment.image", ParamKind::Path},
+        {"rain.drop_count", ParamKind::Int},
+        {"rain.intensity", ParamKind::Float},
+        {"rain.speed", ParamKind::Float},
+        {"wave.damping", ParamKind::Float},
+        {"water.reflectivity", ParamKind::Float},
+        {"look.vignette", ParamKind::Float},
+        {"look.fog_density", ParamKind::Float},
+        {"environment.rotation", ParamKind::Float},
+        {"ground.checkerboard", ParamKind::Bool},
+        {"ground.scale", ParamKind::Float},
+        {"water.turbidity", ParamKind::Float},
+        {"puddle.depth", ParamKind::Float},
+        {"water.tint", ParamKind::Color},
+        {"camera.position", ParamKind::Vec3},
+        {"camera.target", ParamKind::Vec3},
+        {"camera.fov", ParamKind::Float},
+        {"puddle.size", ParamKind::Vec3},
+        {"wave.resolution", ParamKind::Int},
+        {"wave.steps_per_second", ParamKind::Float},
+        {"water.normal_strength", ParamKind::Float},
+        {"rain.seed", ParamKind::Int},
+        {"environment.image", ParamKind::Path},
         {"render.method", ParamKind::Enum},
     };
     for (const auto& [name, kind] : expected) {
@@ -179,11 +191,14 @@ TEST(Registry, FormatValue) {
 }
 
 TEST(ParseValue, Bool) {
-    for (const char* t : {"true", "1", "on", "yes", " true "}) EXPECT_TRUE(parsed<bool>("ground.checkerboard", t)) << t;
-    for (const char* t : {"false", "0", "off", "no"}) EXPECT_FALSE(parsed<bool>("ground.checkerboard", t)) << t;
+    for (const char* t : {"true", "1", "on", "yes", " true "})
+        EXPECT_TRUE(parsed<bool>("ground.checkerboard", t)) << t;
+    for (const char* t : {"false", "0", "off", "no"})
+        EXPECT_FALSE(parsed<bool>("ground.checkerboard", t)) << t;
     EXPECT_EQ(parse_error("ground.checkerboard", "maybe"),
               "ground.checkerboard = \"maybe\" is not valid: expected true or false");
-    EXPECT_EQ(parse_error("ground.checkerboard", ""), "ground.checkerboard = \"\" is not valid: expected true or false");
+    EXPECT_EQ(parse_error("ground.checkerboard", ""),
+              "ground.checkerboard = \"\" is not valid: expected true or false");
 }
 
 TEST(ParseValue, Int) {
@@ -217,7 +232,8 @@ TEST(ParseValue, Float) {
     EXPECT_EQ(parsed<float>("wave.damping", "0.9"), 0.9f);
     EXPECT_EQ(parse_error("rain.intensity", "5"),
               "rain.intensity = 5 is out of range: allowed a number from 0 to 4 height");
-    EXPECT_EQ(parse_error("wave.damping", "0.5"), "wave.damping = 0.5 is out of range: allowed a number from 0.9 to 1");
+    EXPECT_EQ(parse_error("wave.damping", "0.5"),
+              "wave.damping = 0.5 is out of range: allowed a number from 0.9 to 1");
     EXPECT_EQ(parse_error("wave.damping", "1.01"),
               "wave.damping = 1.01 is out of range: allowed a number from 0.9 to 1");
     EXPECT_EQ(parse_error("rain.intensity", "lots"),
@@ -232,17 +248,20 @@ TEST(ParseValue, Vec3AndColor) {
     EXPECT_EQ(parsed<glm::vec3>("camera.position", "[1, -2.5, 3]"), glm::vec3(1, -2.5f, 3));
     EXPECT_EQ(parsed<glm::vec3>("water.tint", "0.1, 0.2, 0.3"), glm::vec3(0.1f, 0.2f, 0.3f));
     const std::string camera_allowed = "three numbers [x, y, z], each from -1000 to 1000 units";
-    EXPECT_EQ(parse_error("camera.position", "1,2"), "camera.position = \"1,2\" is not valid: expected " + camera_allowed);
+    EXPECT_EQ(parse_error("camera.position", "1,2"),
+              "camera.position = \"1,2\" is not valid: expected " + camera_allowed);
     EXPECT_EQ(parse_error("camera.position", "1,2,3,4"),
               "camera.position = \"1,2,3,4\" is not valid: expected " + camera_allowed);
     EXPECT_EQ(parse_error("camera.position", "1,x,3"),
               "camera.position = \"1,x,3\" is not valid: expected " + camera_allowed);
     EXPECT_EQ(parse_error("camera.position", "2000,0,0"),
               "camera.position = [2000, 0, 0] is out of range: allowed " + camera_allowed);
-    EXPECT_EQ(parse_error("water.tint", "0.5,1.5,0"),
-              "water.tint = [0.5, 1.5, 0] is out of range: allowed three numbers [x, y, z], each from 0 to 1 rgb");
+    EXPECT_EQ(
+        parse_error("water.tint", "0.5,1.5,0"),
+        "water.tint = [0.5, 1.5, 0] is out of range: allowed three numbers [x, y, z], each from 0 to 1 rgb");
     EXPECT_EQ(parse_error("puddle.size", "0,10,10"),
-              "puddle.size = [0, 10, 10] is out of range: allowed three numbers [x, y, z], each from 1 to 1000 units");
+              "puddle.size = [0, 10, 10] is out of range: allowed three numbers [x, y, z], each from 1 to "
+              "1000 units");
 }
 
 TEST(ParseValue, EnumAndPath) {
@@ -260,7 +279,8 @@ TEST(Validate, WrongKindIsRejected) {
     auto r = validate(decl(ParamId::rain_drop_count), ParamValue(2.0f));
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, ExitCode::Config);
-    EXPECT_EQ(r.error().message, "rain.drop_count = 2 has the wrong type: expected an integer from 1 to 128 drops");
+    EXPECT_EQ(r.error().message,
+              "rain.drop_count = 2 has the wrong type: expected an integer from 1 to 128 drops");
     auto b = validate(decl(ParamId::ground_checkerboard), ParamValue(1));
     ASSERT_FALSE(b);
     EXPECT_EQ(b.error().message, "ground.checkerboard = 1 has the wrong type: expected true or false");

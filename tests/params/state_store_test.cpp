@@ -83,7 +83,8 @@ TEST(StateStore, AFileThatStopsBeingTomlKeepsTheKeysBeforeTheBreak) {
     EXPECT_EQ(std::get<float>(loaded.state->entries[0].value), 0.5f);
     ASSERT_EQ(loaded.problems.size(), 1u);
     EXPECT_NE(loaded.problems[0].find(path + ":3: "), std::string::npos) << loaded.problems[0];
-    EXPECT_NE(loaded.problems[0].find("the keys from line 3 on are dropped"), std::string::npos) << loaded.problems[0];
+    EXPECT_NE(loaded.problems[0].find("the keys from line 3 on are dropped"), std::string::npos)
+        << loaded.problems[0];
 }
 
 // A FIFO named as the state file is reported, not waited on.

@@ -1,12 +1,10 @@
 // The headless backend: surfaceless EGL, an offscreen target of the requested size.
 #include <gtest/gtest.h>
 
-#include "support/test_support.hpp"
-
-#include "support/gpu_fixture.hpp"
-
 #include "gpu/device.hpp"
 #include "platform/display.hpp"
+#include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
 
 namespace puddle::platform {
 namespace {
@@ -36,7 +34,10 @@ TEST(HeadlessDisplay, EndingOneEngineLeavesAnotherWorking) {
     const params::Params params;
     auto survivor = test::make_engine(params, {96, 54});
     ASSERT_TRUE(survivor);
-    { auto other = test::make_engine(params, {96, 54}); ASSERT_TRUE(other); }
+    {
+        auto other = test::make_engine(params, {96, 54});
+        ASSERT_TRUE(other);
+    }
     const assets::Image after = test::render_frames(*survivor, 20);
     auto fresh = test::make_engine(params, {96, 54});
     ASSERT_TRUE(fresh);

@@ -26,13 +26,13 @@
 
 #include "app/app.hpp"
 #include "app/engine.hpp"
-#include "systems/puddle_plugin.hpp"
 #include "app/logging.hpp"
 #include "app/process_setup.hpp"
 #include "assets/image_io.hpp"
 #include "soak/process_sample.hpp"
 #include "soak/soak_plan.hpp"
 #include "systems/camera_system.hpp"
+#include "systems/puddle_plugin.hpp"
 #include "systems/scene_select.hpp"
 #include "systems/surface_system.hpp"
 #include "systems/wave_system.hpp"
@@ -357,10 +357,11 @@ int run(int argc, char** argv) {
         return 2;
     }
     const params::Params initial = tuning->layers.compose();
-    auto engine = app::Engine::create(
-        initial, cli_options.display, {.background_compiles = true},
-        {[&tuning](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(*tuning)); },
-         systems::add_puddle_plugin});
+    auto engine = app::Engine::create(initial, cli_options.display, {.background_compiles = true},
+                                      {[&tuning](ecs::World& w, ecs::Schedule& s) {
+                                           return systems::add_live_tuning(w, s, std::move(*tuning));
+                                       },
+                                       systems::add_puddle_plugin});
     if (!engine) {
         std::fprintf(stderr, "soak: %s\n", engine.error().message.c_str());
         return 2;

@@ -1,7 +1,5 @@
 #include "support/running_puddle.hpp"
 
-#include "support/test_support.hpp"
-
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -11,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+
+#include "support/test_support.hpp"
 
 extern char** environ;
 

@@ -5,14 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <random>
+#include <sstream>
 
 namespace puddle::test {
 
 TempDir::TempDir() {
     std::random_device rd;
-    path_ = std::filesystem::temp_directory_path() / ("puddle-test-" + std::to_string(rd()) + std::to_string(rd()));
+    path_ = std::filesystem::temp_directory_path() /
+            ("puddle-test-" + std::to_string(rd()) + std::to_string(rd()));
     std::filesystem::create_directories(path_);
 }
 
@@ -77,7 +78,9 @@ double mean_luma(const assets::Image& img, int x0, int y0, int x1, int y1) {
     return sum / double((x1 - x0) * (y1 - y0));
 }
 
-double mean_luma(const assets::Image& img) { return mean_luma(img, 0, 0, img.width, img.height); }
+double mean_luma(const assets::Image& img) {
+    return mean_luma(img, 0, 0, img.width, img.height);
+}
 
 double luma_stddev(const assets::Image& img, int x0, int y0, int x1, int y1) {
     const double mean = mean_luma(img, x0, y0, x1, y1);
@@ -98,7 +101,9 @@ CommandResult run_command(const std::string& command) {
     return r;
 }
 
-CommandResult run_puddle(const std::string& args) { return run_command(std::string(PUDDLE_BINARY) + " " + args); }
+CommandResult run_puddle(const std::string& args) {
+    return run_command(std::string(PUDDLE_BINARY) + " " + args);
+}
 
 std::filesystem::path output_dir() {
     const auto p = std::filesystem::current_path() / "test-output";

@@ -40,9 +40,9 @@ std::string read_file(const std::filesystem::path& p);
 std::string shared_assets_dir();
 
 struct ImageDiff {
-    int max_channel_diff = 0;     // largest |a - b| over all channels, 0..255
-    double mean_abs_diff = 0;     // over all channels, 0..255
-    double fraction_over = 0;     // pixels with any channel differing by more than the threshold
+    int max_channel_diff = 0;  // largest |a - b| over all channels, 0..255
+    double mean_abs_diff = 0;  // over all channels, 0..255
+    double fraction_over = 0;  // pixels with any channel differing by more than the threshold
 };
 ImageDiff compare_images(const assets::Image& a, const assets::Image& b, int threshold);
 

@@ -1,12 +1,13 @@
 // Analytic ripples (REFERENCE.md section 4): the closed form on the GPU equals the formula on the CPU,
 // the sources stay alive in the number asked for, and a ring travels at the speed the wave field's rings
 // do for the same parameters (the analytic model as an exact reference for the wave field).
+#include "systems/analytic_ripple_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "support/gpu_fixture.hpp"
-#include "systems/analytic_ripple_system.hpp"
 #include "systems/wave_test_support.hpp"
 
 namespace puddle::test {

@@ -2,13 +2,13 @@
 // live-drop list; and that drop entities are recycled, never accumulated.
 #include "systems/drop_system.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <glm/common.hpp>
 #include <set>
 #include <utility>
 #include <vector>
-
-#include <glm/common.hpp>
-#include <gtest/gtest.h>
 
 namespace puddle::systems {
 namespace {
@@ -35,7 +35,9 @@ struct Rain {
     }
     std::vector<Seen> drops() {
         std::vector<Seen> out;
-        world.each<Drop>([&](ecs::Entity, Drop& d) { out.push_back({d.slot, d.cycle, d.position, d.strength}); });
+        world.each<Drop>([&](ecs::Entity, Drop& d) {
+            out.push_back({d.slot, d.cycle, d.position, d.strength});
+        });
         std::sort(out.begin(), out.end(), [](const Seen& a, const Seen& b) { return a.slot < b.slot; });
         return out;
     }
@@ -60,7 +62,8 @@ std::vector<std::vector<Seen>> run(int seed, int steps) {
 TEST(DropSystem, SameSeedGivesIdenticalRain) {
     const auto a = run(1, 600);
     const auto b = run(1, 600);
-    const auto count = static_cast<std::size_t>(std::get<int>(params::decl(ParamId::rain_drop_count).default_value));
+    const auto count =
+        static_cast<std::size_t>(std::get<int>(params::decl(ParamId::rain_drop_count).default_value));
     ASSERT_EQ(a.size(), 600u);
     for (std::size_t i = 0; i < a.size(); ++i) {
         ASSERT_EQ(a[i].size(), count) << "step " << i;
@@ -235,7 +238,8 @@ TEST(DropSystem, LoweringDropCountDespawnsTheExtraEntities) {
     rain.step();
     EXPECT_EQ(rain.world.entity_count(), 5u);
     EXPECT_EQ(rain.world.storage<Drop>().size(), 5u);
-    for (std::size_t s = 0; s < max_drops; ++s) EXPECT_EQ(rain.slots.entity[s].valid(), s < 5) << "slot " << s;
+    for (std::size_t s = 0; s < max_drops; ++s)
+        EXPECT_EQ(rain.slots.entity[s].valid(), s < 5) << "slot " << s;
     for (ecs::Entity e : retired) EXPECT_FALSE(rain.world.alive(e));
     for (const Seen& d : rain.drops()) EXPECT_LT(d.slot, 5);
     EXPECT_LE(rain.live.count, 5);
@@ -255,7 +259,8 @@ TEST(DropSystem, EntityCountNeverExceedsDropCountOverManyCycles) {
         rain.step();
         ASSERT_EQ(rain.world.entity_count(), 16u) << "step " << i;
         ASSERT_EQ(rain.world.storage<Drop>().size(), 16u) << "step " << i;
-        for (std::size_t s = 0; s < 16; ++s) distinct.insert({rain.slots.entity[s].index, rain.slots.entity[s].generation});
+        for (std::size_t s = 0; s < 16; ++s)
+            distinct.insert({rain.slots.entity[s].index, rain.slots.entity[s].generation});
     }
     // Every cycle made a new entity (so drops really were respawned), yet the slots were recycled.
     EXPECT_GT(distinct.size(), 16u * 400u);

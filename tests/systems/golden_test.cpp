@@ -39,20 +39,24 @@ void check_golden(const char* name, const assets::Image& image) {
 
 constexpr glm::ivec2 golden_size{480, 270};
 
-TEST(Golden, DefaultNightPuddle) { check_golden("default", render_with({}, 90, golden_size)); }
+TEST(Golden, DefaultNightPuddle) {
+    check_golden("default", render_with({}, 90, golden_size));
+}
 
 TEST(Golden, MurkyPondOnCobblesRaymarched) {
-    check_golden("murky_pond", render_with({"ground.checkerboard=false", "water.turbidity=0.08",
-                                            "water.tint=0.05,0.09,0.04", "puddle.depth=8", "render.method=raymarch",
-                                            "rain.drop_count=6", "wave.damping=0.995"},
-                                           90, golden_size));
+    check_golden(
+        "murky_pond",
+        render_with({"ground.checkerboard=false", "water.turbidity=0.08", "water.tint=0.05,0.09,0.04",
+                     "puddle.depth=8", "render.method=raymarch", "rain.drop_count=6", "wave.damping=0.995"},
+                    90, golden_size));
 }
 
 TEST(Golden, DownpourMirrorTurnedSky) {
-    check_golden("downpour", render_with({"rain.drop_count=100", "rain.intensity=0.2", "rain.speed=2.5",
-                                          "water.reflectivity=1", "environment.rotation=2.5", "look.fog_density=0.02",
-                                          "look.vignette=0.8", "camera.position=25,10,0", "camera.target=-40,2,0"},
-                                         90, golden_size));
+    check_golden("downpour",
+                 render_with({"rain.drop_count=100", "rain.intensity=0.2", "rain.speed=2.5",
+                              "water.reflectivity=1", "environment.rotation=2.5", "look.fog_density=0.02",
+                              "look.vignette=0.8", "camera.position=25,10,0", "camera.target=-40,2,0"},
+                             90, golden_size));
 }
 
 // An HDR environment (made here: a city at night whose windows are 4 to 16 times brighter than white,
@@ -61,10 +65,11 @@ TEST(Golden, HdrCityLightsInTheRain) {
     TempDir dir;
     const std::string sky = (dir / "city.hdr").string();
     write_float_image(sky, city_lights_panorama(1024));
-    check_golden("hdr_city_lights", render_with({"environment.image=" + sky, "camera.position=0,9,34",
-                                                 "camera.target=0,3,-10", "rain.drop_count=24", "water.reflectivity=1",
-                                                 "ground.checkerboard=false", "look.fog_density=0.004"},
-                                                90, golden_size));
+    check_golden("hdr_city_lights",
+                 render_with({"environment.image=" + sky, "camera.position=0,9,34", "camera.target=0,3,-10",
+                              "rain.drop_count=24", "water.reflectivity=1", "ground.checkerboard=false",
+                              "look.fog_density=0.004"},
+                             90, golden_size));
 }
 
 // Scenes and drop models (issue 5), smaller: one picture each, also shown in the README. None of them
@@ -72,7 +77,9 @@ TEST(Golden, HdrCityLightsInTheRain) {
 constexpr glm::ivec2 scene_golden_size{320, 180};
 
 // The reference's camera (0, 5, 5) looks down at the water; the second looks out to the horizon.
-TEST(Golden, OceanScene) { check_golden("ocean", render_with({"scene.kind=ocean"}, 4, scene_golden_size)); }
+TEST(Golden, OceanScene) {
+    check_golden("ocean", render_with({"scene.kind=ocean"}, 4, scene_golden_size));
+}
 
 TEST(Golden, OceanSceneToTheHorizon) {
     check_golden("ocean_horizon", render_with({"scene.kind=ocean", "ocean.camera_position=0,4,5",
@@ -88,7 +95,9 @@ TEST(Golden, PuddleAnalyticRipples) {
     check_golden("analytic", render_with({"drops.model=analytic"}, 4, scene_golden_size));
 }
 
-TEST(Golden, PuddleGridDrops) { check_golden("grid", render_with({"drops.model=grid"}, 4, scene_golden_size)); }
+TEST(Golden, PuddleGridDrops) {
+    check_golden("grid", render_with({"drops.model=grid"}, 4, scene_golden_size));
+}
 
 }  // namespace
 }  // namespace puddle::test

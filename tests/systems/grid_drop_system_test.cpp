@@ -1,11 +1,12 @@
 // Grid-sampled drops (REFERENCE.md section 5): no drop reaches past its 3x3 cells, so testing only those
 // nine loses nothing, and the rings come and go with the cycle.
+#include "systems/grid_drop_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "support/gpu_fixture.hpp"
-#include "systems/grid_drop_system.hpp"
 
 namespace puddle::test {
 namespace {

@@ -1,6 +1,7 @@
 // The live-tuning system: config reloads and knob turns reaching Params, the delayed state save.
-#include <gtest/gtest.h>
+#include "systems/live_tuning.hpp"
 
+#include <gtest/gtest.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
 
@@ -10,7 +11,6 @@
 
 #include "io/gpio_mock.hpp"
 #include "support/test_support.hpp"
-#include "systems/live_tuning.hpp"
 
 namespace puddle::systems {
 namespace {
@@ -155,7 +155,8 @@ TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
     rig.step(2.5);
     EXPECT_NEAR(rig.params.get<ParamId::rain_intensity>(), 0.7f, 1e-5);
     EXPECT_EQ(rig.params.source(ParamId::rain_intensity), ParamSource::Knob);
-    EXPECT_FALSE(std::filesystem::exists(rig.dir / "state.toml")) << "saved a few seconds after the last change";
+    EXPECT_FALSE(std::filesystem::exists(rig.dir / "state.toml"))
+        << "saved a few seconds after the last change";
     rig.step(2.5 + LiveTuning::save_delay_seconds);
     ASSERT_TRUE(std::filesystem::exists(rig.dir / "state.toml"));
     auto saved = params::load_config_file((rig.dir / "state.toml").string());

@@ -15,8 +15,8 @@ namespace {
 constexpr int W = 160, H = 90;
 
 assets::Image render(const std::string& rotation, glm::ivec2 size, const std::string& scale = "1") {
-    auto engine =
-        make_engine(make_params({"display.rotation=" + rotation, "rain.seed=5", "render.scale=" + scale}), size);
+    auto engine = make_engine(
+        make_params({"display.rotation=" + rotation, "rain.seed=5", "render.scale=" + scale}), size);
     EXPECT_TRUE(engine);
     return engine ? render_frames(*engine, 30) : assets::Image{};
 }
@@ -58,7 +58,8 @@ TEST(DisplayRotation, ChangingItWhileRunningTakesEffectOnTheNextFrame) {
     auto engine = make_engine(make_params({"rain.seed=5"}), {W, H});
     ASSERT_TRUE(engine);
     render_frames(*engine, 29);
-    engine->params().set(params::ParamId::display_rotation, std::string("180"), params::ParamSource::CommandLine);
+    engine->params().set(params::ParamId::display_rotation, std::string("180"),
+                         params::ParamSource::CommandLine);
     const assets::Image turned = render_frames(*engine, 1);
     const assets::Image upright = render("0", {W, H});
     EXPECT_LE(compare_images(turned, turn(upright, 2), 0).max_channel_diff, 1);
@@ -71,7 +72,8 @@ assets::Image double_size(const assets::Image& a) {
         for (int c = 0; c < b.width; ++c) {
             const float x = std::clamp((c + 0.5f) / 2.0f - 0.5f, 0.0f, float(a.width - 1));
             const float y = std::clamp((r + 0.5f) / 2.0f - 0.5f, 0.0f, float(a.height - 1));
-            const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, a.width - 1), y1 = std::min(y0 + 1, a.height - 1);
+            const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, a.width - 1),
+                      y1 = std::min(y0 + 1, a.height - 1);
             const float fx = x - float(x0), fy = y - float(y0);
             for (int k = 0; k < 4; ++k) {
                 const auto at = [&](int xx, int yy) {

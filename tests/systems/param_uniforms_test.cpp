@@ -17,7 +17,8 @@ namespace {
 class ParamUniforms : public ::testing::Test {
 protected:
     void SetUp() override {
-        auto d = platform::create_headless_display({.backend = platform::BackendKind::Headless, .size = {32, 32}});
+        auto d =
+            platform::create_headless_display({.backend = platform::BackendKind::Headless, .size = {32, 32}});
         ASSERT_TRUE(d.ok()) << d.error().message;
         display_ = std::move(d).value();
         device_ = std::make_unique<gpu::Device>();
@@ -62,8 +63,9 @@ TEST_F(ParamUniforms, AMisspelledParameterUniformIsAnErrorNamingItAndTheNearestP
     ASSERT_TRUE(p.ok()) << p.error().message;
     auto b = bind_params(*p);
     ASSERT_FALSE(b.ok());
-    EXPECT_EQ(b.error().message,
-              "gpu: pipeline 'street': uniform u_street_horizn is no parameter (did you mean street.horizon?)");
+    EXPECT_EQ(
+        b.error().message,
+        "gpu: pipeline 'street': uniform u_street_horizn is no parameter (did you mean street.horizon?)");
 }
 
 }  // namespace

@@ -21,7 +21,9 @@ TEST(PuddleVariants, EveryVariantCompiles) {
         for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(systems::tonemap_count); ++t) {
-                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm,
+                    const PuddleVariant v{.raymarch = raymarch,
+                                          .ground = g,
+                                          .env_rgbm = rgbm,
                                           .tonemap = static_cast<params::Tonemap>(t)};
                     EXPECT_NE(renderer.pipeline(device, v), nullptr) << systems::describe(v);
                 }
@@ -53,7 +55,8 @@ TwoPictures render_both(std::initializer_list<std::string> sets, GroundKind forc
 
 TEST(PuddleVariants, HiddenGroundLooksLikeTheFullRefraction) {
     // Turbidity 1.2 over the default 4-unit depth: at most 0.6 * e^-8.9 of the ground shows.
-    const TwoPictures p = render_both({"water.turbidity=1.2", "ground.checkerboard=false"}, GroundKind::Image);
+    const TwoPictures p =
+        render_both({"water.turbidity=1.2", "ground.checkerboard=false"}, GroundKind::Image);
     ASSERT_FALSE(p.chosen.empty());
     EXPECT_EQ(p.chosen_variant.ground, GroundKind::Hidden);
     const ImageDiff d = compare_images(p.chosen, p.forced, 1);
@@ -63,7 +66,8 @@ TEST(PuddleVariants, HiddenGroundLooksLikeTheFullRefraction) {
 
 // The comparison above can fail: where the ground does show, leaving it out changes the picture.
 TEST(PuddleVariants, HidingAVisibleGroundChangesThePicture) {
-    const TwoPictures p = render_both({"water.turbidity=0.05", "ground.checkerboard=false"}, GroundKind::Hidden);
+    const TwoPictures p =
+        render_both({"water.turbidity=0.05", "ground.checkerboard=false"}, GroundKind::Hidden);
     ASSERT_FALSE(p.chosen.empty());
     EXPECT_EQ(p.chosen_variant.ground, GroundKind::Image);
     EXPECT_GT(compare_images(p.chosen, p.forced, 4).fraction_over, 0.2);

@@ -56,7 +56,8 @@ TEST(PuddleVariant, GroundHiddenOnlyWhenTurbidityLeavesNothingVisible) {
     // A deeper puddle hides the ground at a lower turbidity; bigger waves bring it closer again.
     EXPECT_TRUE(ground_hidden(with({"water.turbidity=0.5", "puddle.depth=20"})));
     EXPECT_FALSE(ground_hidden(with({"water.turbidity=1.2", "wave.height_scale=2"})));
-    const PuddleVariant v = choose_puddle_variant(with({"water.turbidity=2", "ground.checkerboard=false"}), false);
+    const PuddleVariant v =
+        choose_puddle_variant(with({"water.turbidity=2", "ground.checkerboard=false"}), false);
     EXPECT_EQ(v.ground, GroundKind::Hidden);  // whatever the ground is, none of it shows
 }
 
@@ -67,7 +68,9 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
         for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
-                    const PuddleVariant v{.raymarch = raymarch, .ground = g, .env_rgbm = rgbm,
+                    const PuddleVariant v{.raymarch = raymarch,
+                                          .ground = g,
+                                          .env_rgbm = rgbm,
                                           .tonemap = static_cast<params::Tonemap>(t)};
                     const std::size_t i = variant_index(v);
                     EXPECT_LT(i, puddle_variant_count);
@@ -87,7 +90,10 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
 }
 
 TEST(PuddleVariant, DescribeNamesTheChoices) {
-    EXPECT_EQ(describe({.raymarch = true, .ground = GroundKind::Image, .env_rgbm = true, .tonemap = params::Tonemap::reinhard}),
+    EXPECT_EQ(describe({.raymarch = true,
+                        .ground = GroundKind::Image,
+                        .env_rgbm = true,
+                        .tonemap = params::Tonemap::reinhard}),
               "raymarch, ground image, RGBM sky, reinhard tone curve");
     EXPECT_EQ(describe({}), "intersect, checkerboard, clip tone curve");
 }

@@ -11,8 +11,12 @@ namespace puddle::test {
 namespace {
 
 // The lower part of the frame: water seen from above.
-double water_luma(const assets::Image& img) { return mean_luma(img, 0, 45, 160, 90); }
-double water_contrast(const assets::Image& img) { return luma_stddev(img, 20, 50, 140, 88); }
+double water_luma(const assets::Image& img) {
+    return mean_luma(img, 0, 45, 160, 90);
+}
+double water_contrast(const assets::Image& img) {
+    return luma_stddev(img, 20, 50, 140, 88);
+}
 
 double mean_channel(const assets::Image& img, int c, int y0 = 45) {
     double s = 0;
@@ -33,9 +37,12 @@ TEST(RenderSystem, MoreTurbidityMeansLessGroundContrast) {
 }
 
 TEST(RenderSystem, DeeperWaterDarkensTheGround) {
-    const auto shallow = render_with({"rain.intensity=0", "puddle.depth=2", "water.turbidity=0.1", "water.tint=0,0,0"}, 3);
-    const auto deep = render_with({"rain.intensity=0", "puddle.depth=20", "water.turbidity=0.1", "water.tint=0,0,0"}, 3);
-    EXPECT_GT(water_luma(shallow), water_luma(deep) + 3.0) << water_luma(shallow) << " vs " << water_luma(deep);
+    const auto shallow =
+        render_with({"rain.intensity=0", "puddle.depth=2", "water.turbidity=0.1", "water.tint=0,0,0"}, 3);
+    const auto deep =
+        render_with({"rain.intensity=0", "puddle.depth=20", "water.turbidity=0.1", "water.tint=0,0,0"}, 3);
+    EXPECT_GT(water_luma(shallow), water_luma(deep) + 3.0)
+        << water_luma(shallow) << " vs " << water_luma(deep);
 }
 
 TEST(RenderSystem, EnvironmentRotationTurnsTheReflection) {
@@ -49,7 +56,8 @@ TEST(RenderSystem, EnvironmentRotationTurnsTheReflection) {
 TEST(RenderSystem, CheckerboardOffShowsTheGroundImage) {
     TempDir dir;
     assets::Image red = assets::Image::make(16, 16);
-    for (int i = 0; i < 16 * 16; ++i) red.data[std::size_t(i) * 4] = 255, red.data[std::size_t(i) * 4 + 3] = 255;
+    for (int i = 0; i < 16 * 16; ++i)
+        red.data[std::size_t(i) * 4] = 255, red.data[std::size_t(i) * 4 + 3] = 255;
     const std::string path = (dir / "red.png").string();
     ASSERT_TRUE(assets::write_png(path, red).ok());
     const std::vector<std::string> common{"rain.intensity=0", "water.turbidity=0", "ground.image=" + path};
@@ -88,7 +96,8 @@ TEST(RenderSystem, VignetteDarkensCornersNotTheCentre) {
     const auto none = render_with({"look.vignette=0"}, 3);
     const auto strong = render_with({"look.vignette=1.2"}, 3);
     EXPECT_LT(mean_luma(strong, 0, 70, 20, 90), 0.6 * mean_luma(none, 0, 70, 20, 90));
-    EXPECT_NEAR(mean_luma(strong, 78, 43, 82, 47), mean_luma(none, 78, 43, 82, 47), 0.1 * mean_luma(none, 78, 43, 82, 47) + 1);
+    EXPECT_NEAR(mean_luma(strong, 78, 43, 82, 47), mean_luma(none, 78, 43, 82, 47),
+                0.1 * mean_luma(none, 78, 43, 82, 47) + 1);
 }
 
 TEST(RenderSystem, FogDimsTheFarWater) {
@@ -119,8 +128,8 @@ TEST(RenderSystem, NormalStrengthScalesTheRipples) {
 // step only closes the gap by a factor 1 - |dir.y|, and misses the far water.
 TEST(RenderSystem, IntersectAndRaymarchAgree) {
     const auto fast = render_with({"render.method=intersect", "rain.drop_count=30"}, 60, {320, 180});
-    const auto reference =
-        render_with({"render.method=raymarch", "render.march_steps=64", "rain.drop_count=30"}, 60, {320, 180});
+    const auto reference = render_with(
+        {"render.method=raymarch", "render.march_steps=64", "rain.drop_count=30"}, 60, {320, 180});
     const ImageDiff d = compare_images(fast, reference, 24);
     if (d.mean_abs_diff >= 1.5) save(fast, "method_intersect.png"), save(reference, "method_raymarch.png");
     EXPECT_LT(d.mean_abs_diff, 1.5);

@@ -113,7 +113,8 @@ TEST(TimeContinuity, RainOverlayMovesNormallyAfterTenToTheEightSeconds) {
 // 6.8 years, and every cell moved its drop mid-ring. Rings live a tenth of a second, so the control is a
 // whole number of cycles earlier: every ring at the same age, only the drops' places differ.
 TEST(TimeContinuity, GridDropsDoNotJumpAfterTwoToTheThirtyOneCycles) {
-    const auto cycle = static_cast<double>(make_params({"grid.cycle=0.1"}).get<params::ParamId::grid_cycle>());
+    const auto cycle =
+        static_cast<double>(make_params({"grid.cycle=0.1"}).get<params::ParamId::grid_cycle>());
     expect_continuous_at(grid, 2147483648.0 * cycle, (2147483648.0 - 1000.0) * cycle);
 }
 

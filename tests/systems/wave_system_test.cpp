@@ -15,8 +15,8 @@ constexpr int N = 128;
 constexpr float C = 64.5f;  // the centre of texel 64: the impulse is symmetric on the grid
 
 std::unique_ptr<app::Engine> quiet_engine(float damping) {
-    return make_engine(make_params({"wave.resolution=" + std::to_string(N), "wave.damping=" + std::to_string(damping),
-                                    "rain.intensity=0"}),
+    return make_engine(make_params({"wave.resolution=" + std::to_string(N),
+                                    "wave.damping=" + std::to_string(damping), "rain.intensity=0"}),
                        {32, 18});
 }
 
@@ -66,8 +66,9 @@ TEST(WaveSystem, RingStaysSymmetric) {
             const int mx = 2 * c - x, my = 2 * c - y;
             if (mx < 0 || mx >= N || my < 0 || my >= N) continue;
             peak = std::max(peak, std::abs(f.cur(x, y)));
-            worst = std::max({worst, std::abs(f.cur(x, y) - f.cur(mx, y)), std::abs(f.cur(x, y) - f.cur(x, my)),
-                              std::abs(f.cur(x, y) - f.cur(y, x))});  // mirror x, mirror y, transpose
+            worst =
+                std::max({worst, std::abs(f.cur(x, y) - f.cur(mx, y)), std::abs(f.cur(x, y) - f.cur(x, my)),
+                          std::abs(f.cur(x, y) - f.cur(y, x))});  // mirror x, mirror y, transpose
         }
     ASSERT_GT(peak, 1e-3);
     EXPECT_LT(worst, 1e-4 * std::max(peak, 1.0)) << "peak " << peak;
@@ -112,7 +113,7 @@ TEST(WaveSystem, SameSimulatedTimeGivesTheSameFieldAt30And144Fps) {
     auto a = make_engine(params, {32, 18});
     auto b = make_engine(params, {32, 18});
     ASSERT_TRUE(a && b);
-    render_frames(*a, 60, 1.0 / 30.0);   // 2 s
+    render_frames(*a, 60, 1.0 / 30.0);    // 2 s
     render_frames(*b, 288, 1.0 / 144.0);  // 2 s
     EXPECT_EQ(a->world().resource<systems::FrameClock>().step_index, 120u);
     EXPECT_EQ(b->world().resource<systems::FrameClock>().step_index, 120u);

@@ -40,9 +40,11 @@ inline double energy(const Field& f) {
             const double dt = double(f.cur(x, y)) - f.prev(x, y);
             kinetic += dt * dt;
             if (x + 1 < f.n)
-                potential += (double(f.cur(x + 1, y)) - f.cur(x, y)) * (double(f.prev(x + 1, y)) - f.prev(x, y));
+                potential +=
+                    (double(f.cur(x + 1, y)) - f.cur(x, y)) * (double(f.prev(x + 1, y)) - f.prev(x, y));
             if (y + 1 < f.n)
-                potential += (double(f.cur(x, y + 1)) - f.cur(x, y)) * (double(f.prev(x, y + 1)) - f.prev(x, y));
+                potential +=
+                    (double(f.cur(x, y + 1)) - f.cur(x, y)) * (double(f.prev(x, y + 1)) - f.prev(x, y));
         }
     return kinetic + 0.5 * potential;
 }

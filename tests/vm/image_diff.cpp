@@ -21,8 +21,10 @@
 namespace {
 
 int usage(const char* why) {
-    std::fprintf(stderr, "puddle-image-diff: %s\nusage: puddle-image-diff A B [--mean M] [--threshold T] "
-                         "[--fraction F] [--diff OUT.png]\n", why);
+    std::fprintf(stderr,
+                 "puddle-image-diff: %s\nusage: puddle-image-diff A B [--mean M] [--threshold T] "
+                 "[--fraction F] [--diff OUT.png]\n",
+                 why);
     return 2;
 }
 
@@ -41,8 +43,10 @@ int main(int argc, char** argv) {
     double mean_max = 1.5, threshold = 32, fraction_max = 0.01;
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
-        double* number = arg == "--mean" ? &mean_max : arg == "--threshold" ? &threshold
-                       : arg == "--fraction" ? &fraction_max : nullptr;
+        double* number = arg == "--mean"        ? &mean_max
+                         : arg == "--threshold" ? &threshold
+                         : arg == "--fraction"  ? &fraction_max
+                                                : nullptr;
         if (number || arg == "--diff") {
             if (i + 1 >= argc) return usage("an option lacks its value");
             if (number && !parse_number(argv[++i], *number)) return usage("not a number >= 0");
@@ -72,16 +76,18 @@ int main(int argc, char** argv) {
     }
     const test::ImageDiff d = test::compare_images(a, b, static_cast<int>(threshold));
     const bool within = d.mean_abs_diff <= mean_max && d.fraction_over <= fraction_max;
-    std::printf("%dx%d, mean difference %.3f/255 (at most %.3g), %.3f%% of pixels off by more than %g "
-                "(at most %.3g%%), largest %d/255: %s\n",
-                a.width, a.height, d.mean_abs_diff, mean_max, d.fraction_over * 100, threshold,
-                fraction_max * 100, d.max_channel_diff, within ? "match" : "DIFFERENT");
+    std::printf(
+        "%dx%d, mean difference %.3f/255 (at most %.3g), %.3f%% of pixels off by more than %g "
+        "(at most %.3g%%), largest %d/255: %s\n",
+        a.width, a.height, d.mean_abs_diff, mean_max, d.fraction_over * 100, threshold, fraction_max * 100,
+        d.max_channel_diff, within ? "match" : "DIFFERENT");
     if (!diff_path.empty()) {
         assets::Image diff = assets::Image::make(a.width, a.height);
         for (std::size_t i = 0; i < diff.data.size(); ++i)
-            diff.data[i] = (i % 4 == 3) ? 255
-                                        : static_cast<std::uint8_t>(std::min(255, 4 * std::abs(int(a.data[i]) -
-                                                                                                int(b.data[i]))));
+            diff.data[i] =
+                (i % 4 == 3)
+                    ? 255
+                    : static_cast<std::uint8_t>(std::min(255, 4 * std::abs(int(a.data[i]) - int(b.data[i]))));
         if (auto r = assets::write_png(diff_path, diff); !r)
             std::fprintf(stderr, "puddle-image-diff: %s\n", r.error().message.c_str());
     }
