@@ -120,6 +120,16 @@ std::vector<std::byte> bytes_of(const std::vector<glm::u8vec4>& texels) {
     return {b.begin(), b.end()};
 }
 
+// A 2x2 camera plane (R8: Y, RG8: UV) holding the first 4 * channels of plane_bytes, texel i at byte
+// i * channels.
+const std::vector<unsigned char> plane_bytes{0, 255, 1, 254, 100, 50, 200, 150};
+Texture make_plane(Device& device, TextureFormat format) {
+    auto t = device.create_texture({.label = "plane", .format = format, .width = 2, .height = 2});
+    EXPECT_TRUE(t.ok()) << t.error().message;
+    t->upload(std::as_bytes(std::span(plane_bytes.data(), std::size_t(4 * gl_format(format).channels))));
+    return std::move(*t);
+}
+
 // R8 and RG8 (a camera's Y and UV planes) drawn into an RGBA8 target, one pixel per texel, as the camera
 // shader samples them. Missing channels sample as 0, 0, 1.
 TEST_F(TextureTest, OneAndTwoChannelByteFormatsSampleAsUploaded) {
@@ -127,9 +137,8 @@ TEST_F(TextureTest, OneAndTwoChannelByteFormatsSampleAsUploaded) {
     for (const TextureFormat format : {TextureFormat::R8, TextureFormat::RG8}) {
         SCOPED_TRACE(format_name(format));
         const int channels = gl_format(format).channels;
-        Texture t = make({.label = "plane", .format = format, .width = 2, .height = 2});
-        const std::vector<unsigned char> bytes{0, 255, 1, 254, 100, 50, 200, 150};
-        t.upload(std::as_bytes(std::span(bytes.data(), std::size_t(4 * channels))));
+        const std::vector<unsigned char>& bytes = plane_bytes;
+        Texture t = make_plane(*device_, format);
         Texture target = test::make_target(*device_, {2, 2}, {1, 0, 1, 0});
         test::draw_texture(*device_, target, copy, t);
         const std::vector<glm::u8vec4> drawn = test::read_texels(*device_, target);
@@ -148,9 +157,8 @@ TEST_F(TextureTest, ReadTextureGivesOneAndTwoChannelBytesOverTwoFiftyFive) {
     for (const TextureFormat format : {TextureFormat::R8, TextureFormat::RG8}) {
         SCOPED_TRACE(format_name(format));
         const int channels = gl_format(format).channels;
-        Texture t = make({.label = "plane", .format = format, .width = 2, .height = 2});
-        const std::vector<unsigned char> bytes{0, 255, 1, 254, 100, 50, 200, 150};
-        t.upload(std::as_bytes(std::span(bytes.data(), std::size_t(4 * channels))));
+        const std::vector<unsigned char>& bytes = plane_bytes;
+        Texture t = make_plane(*device_, format);
         const std::vector<float> back = device_->read_texture(t);
         EXPECT_EQ(device_->take_errors(), "");
         ASSERT_EQ(back.size(), 16u);
