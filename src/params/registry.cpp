@@ -106,6 +106,7 @@ Result<ParamValue> number_value(const ParamDecl& d, double v) {
 }
 
 std::string_view nearest_param_name(std::string_view name) {
+    name = name.substr(0, hint_name_limit);  // edit distance is quadratic: found by the state fuzzer
     std::string_view best;
     std::size_t best_d = SIZE_MAX;
     for (const ParamDecl& d : param_decls()) {

@@ -144,6 +144,15 @@ TEST(Registry, UniformNamesAreUSectionKey) {
     }
 }
 
+// A hint reads only the first hint_name_limit characters, so its cost does not grow with the name (a
+// 41 KB knob param made the state fuzzer time out, and a live config edit would stall the frame thread).
+TEST(Registry, NearestParamNameReadsOnlyTheNamesStart) {
+    const std::string start(hint_name_limit, 'z');
+    EXPECT_EQ(nearest_param_name(start + "rain.drop_count"), nearest_param_name(start));
+    EXPECT_NE(nearest_param_name(start), "rain.drop_count");  // so the tail would have changed the hint
+    EXPECT_EQ(nearest_param_name("rain.drop_cont" + std::string(100000, 'a')), "rain.drop_count");
+}
+
 TEST(Registry, NearestParamNameFindsTypos) {
     EXPECT_EQ(nearest_param_name("rain.drop_cont"), "rain.drop_count");
     EXPECT_EQ(nearest_param_name("rain.dropcount"), "rain.drop_count");
