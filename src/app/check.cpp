@@ -15,6 +15,7 @@
 #include "gpu/device.hpp"
 #include "io/gpio_backend.hpp"
 #include "params/config_loader.hpp"
+#include "params/state_store.hpp"
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
 #include "platform/egl_context.hpp"
@@ -46,6 +47,24 @@ std::string join(const std::vector<std::string>& items, std::size_t max) {
     return out;
 }
 
+// The knob state a start would restore (read only): what it holds, or each value a start will drop.
+void check_saved_state(Report& r, const CliOptions& o) {
+    r.section("saved knob state");
+    const params::StateStore store(o.state_path.empty() ? params::StateStore::default_path() : o.state_path);
+    std::error_code ec;
+    if (!std::filesystem::exists(store.path(), ec)) {
+        r.absent(fmt::format("{}: none yet (knob changes will be saved there)", store.path()));
+        return;
+    }
+    const auto loaded = store.load();
+    for (const std::string& problem : loaded.problems) r.fix(problem);
+    if (!loaded.problems.empty())
+        r.note("a start keeps the valid values and sets the original aside beside it (state.toml.bad-*)");
+    if (loaded.state)
+        r.ok(fmt::format("{}: {} saved value(s){}{}", store.path(), loaded.state->entries.size(),
+                         loaded.state->preset ? ", preset " : "", loaded.state->preset.value_or("")));
+}
+
 }  // namespace
 
 int run_check(const CliOptions& o, const std::string& config_path) {
@@ -71,6 +90,7 @@ int run_check(const CliOptions& o, const std::string& config_path) {
             knobs = config->knobs;
         }
     }
+    if (!knobs.empty()) check_saved_state(r, o);
 
     r.section("display: DRM/KMS (--backend kms)");
     const auto cards = platform::list_drm_cards();

@@ -12,6 +12,8 @@
 #include <cstring>
 #include <sstream>
 
+#include "util/safe_quote.hpp"
+
 namespace puddle::io {
 
 namespace {
@@ -179,12 +181,8 @@ bool MockGpio::command(std::string_view text, double now) {
 }
 
 void MockGpio::note_bad_line(std::string_view line, std::string_view why) {
-    std::string shown(line.substr(0, 120));
-    std::replace_if(
-        shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; },
-        '?');
     const auto level = ++bad_lines_ <= bad_lines_warned ? spdlog::level::warn : spdlog::level::debug;
-    spdlog::log(level, "gpio: mock script {}: {}: '{}'{}", script_, why, shown,
+    spdlog::log(level, "gpio: mock script {}: {}: '{}'{}", script_, why, safe_quote(line, 120),
                 bad_lines_ == bad_lines_warned ? " (further bad lines are logged at debug level)" : "");
 }
 

@@ -9,6 +9,8 @@
 
 #include "params/knob_spec_parse.hpp"
 #include "params/toml_limits.hpp"
+#include "params/toml_syntax_error.hpp"
+#include "util/safe_quote.hpp"
 
 namespace puddle::params {
 
@@ -108,8 +110,9 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path, int* synt
         root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         if (syntax_error_line) *syntax_error_line = static_cast<int>(e.source().begin.line);
-        return make_error(ExitCode::Config, "config: {}:{}: {}", path, e.source().begin.line,
-                          e.description());
+        const int line = static_cast<int>(e.source().begin.line);
+        return make_error(ExitCode::Config, "config: {}:{}: {}", path, line,
+                          explain_toml_error(text, line, e.description()));
     }
     auto problem = [&](int line, Error e) { out.problems.emplace_back(line, std::move(e)); };
     for (auto&& [section_key, section_node] : root) {
@@ -155,7 +158,7 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path, int* synt
             problem(line_of(section_node),
                     make_error(ExitCode::Config,
                                "config: {}:{}: '{}' must be inside a [section] (did you mean '{}'?)", path,
-                               line_of(section_node), key, nearest_param_name(key)));
+                               line_of(section_node), safe_quote(key), nearest_param_name(key)));
             continue;
         }
         for (auto&& [key, node] : *section) {
@@ -164,7 +167,7 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path, int* synt
             if (!d) {
                 problem(line_of(node),
                         make_error(ExitCode::Config, "config: {}:{}: unknown key '{}' (did you mean '{}'?)",
-                                   path, line_of(node), name, nearest_param_name(name)));
+                                   path, line_of(node), safe_quote(name), nearest_param_name(name)));
                 continue;
             }
             auto value = convert(*d, node);
@@ -199,7 +202,7 @@ Result<Config> parse_config(std::string_view text, std::string_view path) {
 Result<PartialConfig> parse_config_keeping_valid(std::string_view text, std::string_view path) {
     int broken_line = 0;
     auto parsed = parse_all(text, path, &broken_line);
-    std::optional<std::string> syntax_error;
+    std::optional<std::string> syntax_error;  // stays unset when the text is TOML to the end
     if (!parsed && broken_line > 1) {
         // Not TOML from some line on (a hand edit gone wrong): the keys before it are still good.
         std::size_t cut = 0;
@@ -214,9 +217,8 @@ Result<PartialConfig> parse_config_keeping_valid(std::string_view text, std::str
         }
     }
     if (!parsed) return parsed.error();
-    PartialConfig out{std::move(parsed->config), {}};
+    PartialConfig out{std::move(parsed->config), {}, std::move(syntax_error)};
     for (auto& [line, e] : parsed->problems) out.dropped.push_back(std::move(e.message));
-    if (syntax_error) out.dropped.push_back(std::move(*syntax_error));
     return out;
 }
 
@@ -234,12 +236,12 @@ Result<ConfigEntry> parse_assignment(std::string_view assignment) {
     const auto eq = assignment.find('=');
     if (eq == std::string_view::npos)
         return make_error(ExitCode::Config, "--set {}: expected name=value, e.g. --set rain.drop_count=20",
-                          assignment);
+                          safe_quote(assignment));
     const std::string_view name = assignment.substr(0, eq);
     const ParamDecl* d = find_param(name);
     if (!d)
         return make_error(ExitCode::Config, "--set {}: unknown parameter '{}' (did you mean '{}'?)",
-                          assignment, name, nearest_param_name(name));
+                          safe_quote(assignment), safe_quote(name), nearest_param_name(name));
     auto value = parse_value(*d, assignment.substr(eq + 1));
     if (!value) return make_error(ExitCode::Config, "--set: {}", value.error().message);
     return ConfigEntry{d->id, std::move(value).value(), 0};

@@ -40,11 +40,13 @@ Result<Config> load_config_file(const std::string& path);
 
 // For the saved state, which is the user's data: a bad key (unknown, wrong type, out of range, a [[knob]]
 // table that does not parse) is left out and reported, one line each in file order, and every valid key
-// is kept. Text that stops being TOML at some line keeps the keys before that line (reported last, with
-// the line). Fails only when no key can be trusted: past the input limits, or not TOML from line 1.
+// is kept. Text that stops being TOML at some line keeps the keys before that line (`syntax_error` says
+// where). Fails only when no key can be trusted: past the input limits, or not TOML from line 1.
 struct PartialConfig {
     Config config;
     std::vector<std::string> dropped;  // "config: PATH:LINE: unknown key 'rain.wind' (did you mean ...?)"
+    // "config: PATH:LINE: rain.seed: Error while parsing ...; the keys from line LINE on are dropped"
+    std::optional<std::string> syntax_error;
 };
 Result<PartialConfig> parse_config_keeping_valid(std::string_view text, std::string_view path);
 // Applies every entry with the given source (precedence rules of Params::set apply).

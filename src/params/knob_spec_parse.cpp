@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "util/safe_quote.hpp"
+
 namespace puddle::params {
 
 namespace {
@@ -59,7 +61,7 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
         bool known = false;
         for (const char* name : known_keys) known = known || key.str() == name;
         if (!known)
-            return fail(line_of(node), fmt::format("unknown key '{}' (knob keys: {})", key.str(),
+            return fail(line_of(node), fmt::format("unknown key '{}' (knob keys: {})", safe_quote(key.str()),
                                                    fmt::join(known_keys, ", ")));
     }
 
@@ -112,8 +114,9 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
         auto s = n->value_exact<std::string>();
         const ParamDecl* d = s ? find_param(*s) : nullptr;
         if (!d)
-            return fail(line_of(*n), fmt::format("param '{}' is not a parameter (did you mean '{}'?)",
-                                                 s.value_or(""), nearest_param_name(s.value_or(""))));
+            return fail(line_of(*n),
+                        fmt::format("param '{}' is not a parameter (did you mean '{}'?)",
+                                    safe_quote(s.value_or("")), nearest_param_name(s.value_or(""))));
         k.param = d->id;
     }
     if (auto n = table.get("action")) {

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "util/safe_quote.hpp"
+
 namespace puddle::params {
 
 ParamValue clamp_to_range(const ParamDecl& d, ParamValue v) {
@@ -67,7 +69,7 @@ Result<void> ParamLayers::restore_state(const Config& state) {
     if (state.preset && *state.preset != knob_preset_) {
         if (auto r = select_preset(*state.preset); !r)
             return make_error(ExitCode::Config, "state: {}: saved preset '{}' is gone; using the config's",
-                              state.path, *state.preset);
+                              state.path, safe_quote(*state.preset));
     }
     return {};
 }

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "params/toml_limits.hpp"
+#include "util/safe_quote.hpp"
 
 namespace puddle::params {
 
@@ -56,7 +57,7 @@ bool Presets::contains(std::string_view name) const {
 Result<Config> Presets::get(std::string_view name) const {
     auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.name == name; });
     if (it == entries_.end())
-        return make_error(ExitCode::Config, "preset '{}' does not exist (presets: {})", name,
+        return make_error(ExitCode::Config, "preset '{}' does not exist (presets: {})", safe_quote(name),
                           fmt::join(names_, ", "));
     if (it->read_error) return *it->read_error;
     auto config = parse_config(it->text, it->origin);

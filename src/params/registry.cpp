@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "util/safe_quote.hpp"
+
 namespace puddle::params {
 
 const ParamDecl& decl(ParamId id) {
@@ -202,7 +204,7 @@ Result<void> validate(const ParamDecl& d, const ParamValue& v) {
             if (!std::holds_alternative<std::string>(v)) return wrong_kind();
             const auto& s = std::get<std::string>(v);
             if (std::find(d.choices.begin(), d.choices.end(), s) == d.choices.end())
-                return make_error(ExitCode::Config, "{} = \"{}\" is not allowed: {}", d.name, s,
+                return make_error(ExitCode::Config, "{} = \"{}\" is not allowed: {}", d.name, safe_quote(s),
                                   describe_range(d));
             return {};
         }
@@ -274,7 +276,7 @@ Result<ParamValue> parse_value(const ParamDecl& d, std::string_view text) {
             break;
     }
     if (!ok)
-        return make_error(ExitCode::Config, "{} = \"{}\" is not valid: expected {}", d.name, s,
+        return make_error(ExitCode::Config, "{} = \"{}\" is not valid: expected {}", d.name, safe_quote(s),
                           describe_range(d));
     if (auto r = validate(d, v); !r) return r.error();
     return v;

@@ -35,10 +35,10 @@ std::string StateStore::default_path() {
 
 namespace {
 
-// "config: PATH:3: ..." from the parser, as the state's own line.
-std::string as_state_problem(std::string message) {
+// "config: PATH:3: ..." from the parser, as the state's own words.
+std::string as_state_line(std::string message) {
     if (message.starts_with("config: ")) message.replace(0, 8, "state: ");
-    return message + "; dropped that value, kept the others";
+    return message;
 }
 
 constexpr std::string_view aside_infix = ".bad-";
@@ -172,11 +172,13 @@ StateStore::Loaded StateStore::load() const {
     auto text = read_toml_file(path_);
     auto parsed = text ? parse_config_keeping_valid(*text, path_) : Result<PartialConfig>(text.error());
     if (!parsed) {
-        out.problems.push_back(fmt::format("state: {} is unreadable ({}); started from the config", path_,
-                                           parsed.error().message));
+        out.problems.push_back(fmt::format("{}; no saved value could be read, started from the config",
+                                           as_state_line(std::move(parsed.error().message))));
         return out;
     }
-    for (std::string& p : parsed->dropped) out.problems.push_back(as_state_problem(std::move(p)));
+    for (std::string& p : parsed->dropped)
+        out.problems.push_back(as_state_line(std::move(p)) + "; dropped that value, kept the others");
+    if (parsed->syntax_error) out.problems.push_back(as_state_line(std::move(*parsed->syntax_error)));
     if (!parsed->config.knobs.empty()) {
         out.problems.push_back(
             fmt::format("state: {}: holds [[knob]] tables, which belong in the config; dropped them", path_));
@@ -188,7 +190,7 @@ StateStore::Loaded StateStore::load() const {
 
 Result<std::string> StateStore::set_aside() {
     auto aside = keep_aside();
-    if (!aside) refusal_ = aside.error().message;
+    if (!aside) refusal_ = aside.error().message + "; saving resumes once it is moved away";
     return aside;
 }
 
@@ -228,7 +230,7 @@ Result<std::string> StateStore::keep_aside() const {
 }
 
 Result<StateStore::Temporary> StateStore::write_beside_target(std::string_view text) const {
-    if (!refusal_.empty()) return make_error(ExitCode::Runtime, "{}", refusal_);
+    if (!refusal_.empty() && !refused_file_gone()) return make_error(ExitCode::Runtime, "{}", refusal_);
     auto target = follow_links(path_);
     if (!target) return target.error();
     const fs::path folder = folder_of(*target);
@@ -261,16 +263,28 @@ Result<std::string> StateStore::write_temporary(std::string_view text) const {
     return t->temp;
 }
 
-Result<void> StateStore::save(std::string_view text) const {
+bool StateStore::refused_file_gone() const {
+    auto target = follow_links(path_);
+    struct stat st {};
+    return target && ::lstat(target->c_str(), &st) != 0 && errno == ENOENT;
+}
+
+Result<void> StateStore::save(std::string_view text) {
+    const bool lifting_refusal = !refusal_.empty();
     auto t = write_beside_target(text);
     if (!t) return t.error();
-    if (::rename(t->temp.c_str(), t->target.c_str()) != 0) {
+    // Saving after a refusal only creates the file: should the refused one come back meanwhile, it stays.
+    const int renamed = lifting_refusal ? ::renameat2(AT_FDCWD, t->temp.c_str(), AT_FDCWD, t->target.c_str(),
+                                                      RENAME_NOREPLACE)
+                                        : ::rename(t->temp.c_str(), t->target.c_str());
+    if (renamed != 0) {
         const int err = errno;
         ::unlink(t->temp.c_str());
         return make_error(ExitCode::Runtime, "state: cannot replace {}: {}", describe(path_, t->target),
                           std::strerror(err));
     }
     sync_folder(folder_of(t->target));  // the rename is durable only once the folder is flushed too
+    refusal_.clear();
     return {};
 }
 

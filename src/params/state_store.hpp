@@ -44,14 +44,15 @@ public:
     // place until save() renames over it), then a copy, then renaming the file, which its folder may allow
     // even when this user can neither read nor link it (a root-owned 0600 file left by `sudo puddle`).
     // Returns the copy's path. Errors: a folder at the path (never moved), or no way worked. After an
-    // error save() refuses for the life of this object (refusal()), so the file stays as it is.
+    // error save() refuses (refusal()), so the file stays as it is, until the file is moved away or
+    // removed (by hand, or by a package upgrade): then saving creates a new file and the refusal ends.
     Result<std::string> set_aside();
     // Writes `text` as TARGET.tmp beside TARGET, fsyncs it, renames it onto TARGET and fsyncs the folder.
     // A missing folder is made for a plain path, not for a link's target (storage that is not mounted:
     // nothing is written beneath it). Errors (one line naming the path and why): refused after a failed
     // set_aside(), a link whose target folder is missing, more than max_links links, cannot write, flush
     // or rename. The temporary file is removed on every error.
-    Result<void> save(std::string_view text) const;
+    Result<void> save(std::string_view text);
     // The first half of save(): the complete temporary file, not yet renamed into place. Separate so a
     // test can stop there, as a crash would.
     Result<std::string> write_temporary(std::string_view text) const;
@@ -65,6 +66,7 @@ private:
     };
     Result<Temporary> write_beside_target(std::string_view text) const;
     Result<std::string> keep_aside() const;
+    bool refused_file_gone() const;  // the path leads to nothing now
 
     std::string path_;
     std::string refusal_;

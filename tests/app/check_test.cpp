@@ -167,8 +167,13 @@ chip = "gpiochip4"
 line = 3
 action = "save"
 )");
-    const CommandResult o = check("--gpio mock: --config " + cfg);
+    const std::string state = (dir / "state.toml").string();
+    const CommandResult o = check("--gpio mock: --config " + cfg + " --state " + state);
     EXPECT_EQ(o.exit_code, 0) << "hardware problems are reported, not fatal:\n" << o.output;
+    EXPECT_EQ(
+        sections(o.output)["[saved knob state]"],
+        (std::vector<std::string>{"  --    " + state + ": none yet (knob changes will be saved there)"}))
+        << o.output;
     EXPECT_EQ(
         sections(o.output)["[GPIO knobs (libgpiod)]"],
         (std::vector<std::string>{
@@ -178,6 +183,32 @@ action = "save"
             "(list them with gpiodetect and gpioinfo)"}))
         << o.output;
     EXPECT_TRUE(has(o.output, "\n1 thing(s) to fix (FIX above).\n")) << o.output;
+}
+
+// A start drops saved values that are no longer valid (a parameter renamed, a range narrowed); --check
+// says which before that happens, and changes nothing on disk.
+TEST(Check, NamesTheSavedValuesAStartWouldDrop) {
+    TempDir dir;
+    const std::string cfg =
+        dir.write("k.toml", "[[knob]]\nkind = \"encoder\"\na = 17\nb = 18\nparam = \"rain.intensity\"\n");
+    const std::string text = "[rain]\nintensity = 0.5\nwind = 1\n[water]\nturbidity = 9\n";
+    const std::string state = dir.write("state.toml", text);
+    const CommandResult o = check("--gpio mock: --config " + cfg + " --state " + state);
+    EXPECT_EQ(o.exit_code, 0) << o.output;
+    EXPECT_EQ(
+        sections(o.output)["[saved knob state]"],
+        (std::vector<std::string>{
+            "  FIX   state: " + state +
+                ":3: unknown key 'rain.wind' (did you mean 'rain.seed'?); dropped that "
+                "value, kept the others",
+            "  FIX   state: " + state +
+                ":5: water.turbidity = 9 is out of range: allowed a number from 0 to 2 "
+                "1/unit; dropped that value, kept the others",
+            "        a start keeps the valid values and sets the original aside beside it (state.toml.bad-*)",
+            "  OK    " + state + ": 1 saved value(s)"}))
+        << o.output;
+    EXPECT_EQ(read_file(state), text) << "--check changes nothing";
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2) << "no copy was made";
 }
 
 TEST(Check, AnInvalidConfigIsExitCodeTwoWithFileLine) {

@@ -190,6 +190,51 @@ TEST(ParseConfig, NumbersAreCheckedBeforeTheyAreNarrowed) {
     EXPECT_EQ(std::get<int>(ok->entries[0].value), 2147483647);
 }
 
+// toml++ refuses numbers past 64 bits or past a double itself, in words that named neither the key nor
+// the range ("Error while parsing floating-point: '1e400' could not be interpreted as a value").
+TEST(ParseConfig, NumbersTooBigForTomlAreOutOfRangeWithKeyAndRange) {
+    EXPECT_EQ(
+        config_error("[rain]\nintensity = 1e400 # very wet\n").message,
+        "config: file.toml:2: rain.intensity = 1e400 is out of range: allowed a number from 0 to 4 height");
+    EXPECT_EQ(
+        config_error("[rain]\nseed = 9223372036854775808\n").message,
+        "config: file.toml:2: rain.seed = 9223372036854775808 is out of range: allowed an integer from 0 "
+        "to 2147483647");
+    EXPECT_EQ(config_error("rain.seed = -0x1ffffffffffffffff\n").message.substr(0, 47),
+              "config: file.toml:1: rain.seed: Error while par");
+    EXPECT_EQ(
+        config_error("[rain]\n\"seed\" = 0x1ffffffffffffffff\n").message,
+        "config: file.toml:2: rain.seed = 0x1ffffffffffffffff is out of range: allowed an integer from 0 "
+        "to 2147483647");
+    EXPECT_EQ(config_error("[camera]\nposition = [1, 1e400, 3]\n").message,
+              "config: file.toml:2: camera.position = [1, 1e400, 3] is out of range: allowed three numbers "
+              "[x, y, z], each from -1000 to 1000 units");
+    // Another syntax error on a key's line names the key; toml++'s words keep no raw newline.
+    const Error bool_typo = config_error("[ground]\ncheckerboard = tru\n");
+    EXPECT_TRUE(
+        bool_typo.message.starts_with("config: file.toml:2: ground.checkerboard: Error while parsing"))
+        << bool_typo.message;
+    EXPECT_EQ(bool_typo.message.find('\n'), std::string::npos) << bool_typo.message;
+    // An unknown key with a huge number keeps toml++'s words, with the key.
+    EXPECT_TRUE(
+        config_error("[rain]\nwind = 1e400\n").message.starts_with("config: file.toml:2: rain.wind: "));
+}
+
+// A name typed (or pasted) at any length gives one readable line: clipped, its length said.
+TEST(ParseConfig, ALongUnknownNameIsClippedInTheMessage) {
+    const std::string name(200, 'w');  // keys past 256 bytes are refused by toml_limits before this
+    const Error e = config_error("[rain]\n" + name + " = 1\n");
+    EXPECT_LT(e.message.size(), 200u) << e.message;
+    EXPECT_TRUE(has_text(e.message, "unknown key 'rain.wwww")) << e.message;
+    EXPECT_TRUE(has_text(e.message, "... (205 bytes)")) << e.message;
+    auto set = parse_assignment("rain." + std::string(5000, 'w') + "=1");
+    ASSERT_FALSE(set);
+    EXPECT_LT(set.error().message.size(), 300u) << set.error().message;
+    auto value = parse_assignment("render.method=" + name);
+    ASSERT_FALSE(value);
+    EXPECT_LT(value.error().message.size(), 300u) << value.error().message;
+}
+
 TEST(ParseConfig, TheTwoScreensOfTheVideoWallAreRefused) {
     const std::string dir = std::string(PUDDLE_SHARED_DIR) + "/cases/config";
     if (!std::filesystem::exists(dir + "/screen1.toml"))

@@ -75,7 +75,7 @@ TEST(StateStorePowerLoss, SigkillDuringSavesLeavesTheOldOrTheNewState) {
         const pid_t child = ::fork();
         ASSERT_GE(child, 0);
         if (child == 0) {  // saves alternating values until killed
-            const StateStore store(path);
+            StateStore store(path);
             for (long i = 0;; ++i) {
                 ++counters->begun;
                 (void)store.save(texts[i % 2]);

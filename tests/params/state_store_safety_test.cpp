@@ -69,7 +69,8 @@ TEST(StateStoreSafety, AFileThatCouldNotBeReadNorSetAsideIsNeverReplaced) {
         const auto loaded = store.load();
         EXPECT_FALSE(loaded.state);
         ASSERT_EQ(loaded.problems.size(), 1u);
-        EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + " is unreadable"))
+        EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + ": ")) << loaded.problems[0];
+        EXPECT_TRUE(loaded.problems[0].ends_with("; no saved value could be read, started from the config"))
             << loaded.problems[0];
 
         const auto aside = store.set_aside();
@@ -80,12 +81,12 @@ TEST(StateStoreSafety, AFileThatCouldNotBeReadNorSetAsideIsNeverReplaced) {
         EXPECT_TRUE(aside.error().message.ends_with(
             ": File name too long; knob changes are not saved, so it stays as it is"))
             << aside.error().message;
-        EXPECT_EQ(store.refusal(), aside.error().message);
+        EXPECT_EQ(store.refusal(), aside.error().message + "; saving resumes once it is moved away");
 
         for (int save = 0; save < 2; ++save) {
             const auto saved = store.save(new_state);
             ASSERT_FALSE(saved) << "save " << save << " replaced a file that was never kept";
-            EXPECT_EQ(saved.error().message, aside.error().message);
+            EXPECT_EQ(saved.error().message, store.refusal());
         }
         EXPECT_EQ(names_under(folder), std::set<std::string>{name}) << "a copy or a temporary file appeared";
         if (fifo) {
@@ -95,6 +96,13 @@ TEST(StateStoreSafety, AFileThatCouldNotBeReadNorSetAsideIsNeverReplaced) {
         } else {
             EXPECT_EQ(read_file(path), big);
         }
+        // Once someone moves the file away, saving resumes (it used to stay refused until a restart).
+        const std::string moved = (folder / "moved").string();
+        ASSERT_EQ(::rename(path.c_str(), moved.c_str()), 0);
+        const auto resumed = store.save(new_state);
+        ASSERT_TRUE(resumed) << resumed.error().message;
+        EXPECT_EQ(read_file(path), new_state);
+        EXPECT_EQ(store.refusal(), "");
     }
 }
 
@@ -118,7 +126,7 @@ TEST(StateStoreSafety, AFolderAtTheStatePathIsNeitherMovedNorReplacedAndGetsNoTe
               "state: " + path + " is a folder, not a file; knob changes are not saved");
     const auto refused = store.save(new_state);
     ASSERT_FALSE(refused);
-    EXPECT_EQ(refused.error().message, aside.error().message);
+    EXPECT_EQ(refused.error().message, aside.error().message + "; saving resumes once it is moved away");
     EXPECT_EQ(names_under(dir.path()), before);
     EXPECT_EQ(read_file(dir / "state.toml" / "kept.txt"), "the user's file");
 }

@@ -67,8 +67,12 @@ TEST(StateStore, AFileThatIsNotTomlGivesNoStateAndOneProblemAndIsLeftInPlace) {
     auto loaded = StateStore(path).load();
     EXPECT_FALSE(loaded.state);
     ASSERT_EQ(loaded.problems.size(), 1u);
-    EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + " is unreadable (config: " + path + ":1: "))
+    // One line in the state's own words: no "(config: PATH...)" inside, and the line it failed at.
+    EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + ":1: ")) << loaded.problems[0];
+    EXPECT_TRUE(loaded.problems[0].ends_with("; no saved value could be read, started from the config"))
         << loaded.problems[0];
+    EXPECT_EQ(loaded.problems[0].find("config: "), std::string::npos) << loaded.problems[0];
+    EXPECT_EQ(loaded.problems[0].find('\x01'), std::string::npos) << "control characters are not quoted";
     EXPECT_EQ(read(path), text) << "load() reads only";
 }
 
@@ -83,8 +87,23 @@ TEST(StateStore, AFileThatStopsBeingTomlKeepsTheKeysBeforeTheBreak) {
     EXPECT_EQ(std::get<float>(loaded.state->entries[0].value), 0.5f);
     ASSERT_EQ(loaded.problems.size(), 1u);
     EXPECT_NE(loaded.problems[0].find(path + ":3: "), std::string::npos) << loaded.problems[0];
-    EXPECT_NE(loaded.problems[0].find("the keys from line 3 on are dropped"), std::string::npos)
-        << loaded.problems[0];
+    EXPECT_TRUE(loaded.problems[0].ends_with("the keys from line 3 on are dropped")) << loaded.problems[0];
+}
+
+// toml++ stops at a number too big for 64 bits without naming the key; the line names it, with the
+// parameter's range, as for any other out-of-range value, and the values above it are kept.
+TEST(StateStore, ANumberTooBigForTomlIsNamedWithItsKeyAndRange) {
+    test::TempDir dir;
+    const std::string path =
+        dir.write("state.toml", "[rain]\nintensity = 0.5\nseed = 99999999999999999999\n");
+    auto loaded = StateStore(path).load();
+    ASSERT_TRUE(loaded.state);
+    ASSERT_EQ(loaded.state->entries.size(), 1u);
+    ASSERT_EQ(loaded.problems.size(), 1u);
+    EXPECT_EQ(loaded.problems[0],
+              "state: " + path +
+                  ":3: rain.seed = 99999999999999999999 is out of range: allowed an integer "
+                  "from 0 to 2147483647; the keys from line 3 on are dropped");
 }
 
 // A FIFO named as the state file is reported, not waited on.
