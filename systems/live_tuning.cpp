@@ -4,7 +4,9 @@
 #include <spdlog/spdlog.h>
 #include <time.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace puddle::systems {
 
@@ -18,6 +20,17 @@ double monotonic_seconds() {
 }
 
 namespace {
+
+// A refusal or a full disk fails every save alike: one line, not one per knob turn.
+void report_save(LiveTuning& t, const Result<void>& saved) {
+    if (!saved) {
+        if (saved.error().message != t.last_save_problem) spdlog::warn("{}", saved.error().message);
+        t.last_save_problem = saved.error().message;
+    } else {
+        t.last_save_problem.clear();
+        spdlog::info("state: knob values saved to {}", t.state->path());
+    }
+}
 
 void make_knobs(LiveTuning& t) {
     t.knobs.clear();
@@ -93,7 +106,7 @@ void apply_action(LiveTuning& t, const io::KnobAction& a, const params::Params& 
                 }
                 case params::ButtonAction::SaveState:
                     t.state_dirty = true;
-                    save_state(t);
+                    start_state_save(t);
                     return;
             }
             break;
@@ -160,7 +173,9 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
         for (const io::KnobAction& a : t.actions) apply_action(t, a, params, now);
         t.actions.clear();
     }
-    if (t.state_dirty && t.state && now - t.last_knob_change >= LiveTuning::save_delay_seconds) save_state(t);
+    if (auto saved = t.saver ? t.saver->take() : std::nullopt) report_save(t, *saved);
+    if (t.state_dirty && t.state && now - t.last_knob_change >= LiveTuning::save_delay_seconds)
+        start_state_save(t);
 
     if (!t.layers_changed) return;
     t.layers_changed = false;
@@ -170,17 +185,27 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
     spdlog::info("{}: {}", t.change_reason, changes);
 }
 
-void save_state(LiveTuning& t) {
-    if (!t.state_dirty || !t.state) return;
+void start_state_save(LiveTuning& t) {
+    if (!t.state_dirty || !t.state || !t.saver) return;
     t.state_dirty = false;
-    if (auto r = t.state->save(t.layers.state_text()); !r) {
-        // A refusal or a full disk fails every save alike: one line, not one per knob turn.
-        if (r.error().message != t.last_save_problem) spdlog::warn("{}", r.error().message);
-        t.last_save_problem = r.error().message;
-    } else {
-        t.last_save_problem.clear();
-        spdlog::info("state: knob values saved to {}", t.state->path());
-    }
+    // Only the saver thread touches the store from here on; a newer save replaces one still waiting.
+    t.saver->submit(
+        [store = &*t.state, text = t.layers.state_text()](std::stop_token) { return store->save(text); });
+}
+
+void finish_state_save(LiveTuning& t) {
+    if (!t.saver) return;
+    while (t.saver->running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (auto saved = t.saver->take()) report_save(t, *saved);
+}
+
+void save_state(LiveTuning& t) {
+    if (!t.state) return;
+    finish_state_save(t);  // a save submitted earlier wrote what was current then
+    t.saver.reset();       // no thread touches the store any more
+    if (!t.state_dirty) return;
+    t.state_dirty = false;
+    report_save(t, t.state->save(t.layers.state_text()));
 }
 
 void live_tuning_system(LiveTuning& tuning, params::Params& params) {

@@ -1,7 +1,8 @@
 #pragma once
 // Live tuning: the input-stage system that keeps Params up to date while the display runs. It reloads
 // the config when the file changes (inotify) or on SIGHUP, turns knob events into parameter changes,
-// saves the knob state a few seconds after the last turn, and recomposes the effective Params from the
+// saves the knob state a few seconds after the last turn (on a worker thread: an SD card can take
+// seconds to fsync, and frames must not wait for it), and recomposes the effective Params from the
 // layers (defaults < preset < config < knobs < --set) whenever one of them changed. Other systems just
 // read Params; a value that needs a rebuild (wave resolution) is rebuilt by the system that owns it.
 
@@ -17,6 +18,7 @@
 #include "params/config_watcher.hpp"
 #include "params/param_layers.hpp"
 #include "params/state_store.hpp"
+#include "util/background_job.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {
@@ -36,6 +38,8 @@ struct LiveTuning {
     std::optional<params::StateStore> state;
     bool state_dirty = false;
     std::string last_save_problem;  // logged once; the same failure is not logged again until a save works
+    // Writes `state` off the frame thread; declared after it, so it is stopped before the store dies.
+    std::unique_ptr<BackgroundJob<Result<void>>> saver = std::make_unique<BackgroundJob<Result<void>>>();
     double last_knob_change = 0;
     bool layers_changed = false;
     const char* change_reason = "";  // for the log line
@@ -55,7 +59,13 @@ bool reload_config(LiveTuning& tuning);
 void live_tuning_step(LiveTuning& tuning, params::Params& params, double now);
 // Input stage: live_tuning_step at the monotonic time now.
 void live_tuning_system(LiveTuning& tuning, params::Params& params);
-// Writes the knob state now when it has unsaved changes (the exit stage, or the "save" button).
+// Hands the knob state to the saver thread when it has unsaved changes (the delayed save, the "save"
+// button); the result is logged by a later live_tuning_step. Never waits for the disk.
+void start_state_save(LiveTuning& tuning);
+// Waits for a save in progress and logs its result (tests use it to see what a save did).
+void finish_state_save(LiveTuning& tuning);
+// The exit stage: waits for a save in progress, then writes the knob state now if it has changes that
+// are not on disk yet. Waiting is fine here: the frame loop has ended.
 void save_state(LiveTuning& tuning);
 
 // Inserts the resource, starts it (start_live_tuning), adds live_tuning_system to the input stage and

@@ -21,8 +21,10 @@ std::string unquote_key(std::string_view key) {
     char quote = 0;
     for (char c : key) {
         if (quote) {
-            if (c == quote) quote = 0;
-            else out += c;
+            if (c == quote)
+                quote = 0;
+            else
+                out += c;
         } else if (c == '"' || c == '\'') {
             quote = c;
         } else if (c != ' ' && c != '\t') {
@@ -61,9 +63,11 @@ Assignment assignment_at(std::string_view text, int line) {
         std::size_t end = text.find('\n', start);
         if (end == std::string_view::npos) end = text.size();
         const std::string_view l = trim(before_comment(text.substr(start, end - start)));
-        if (n == line) at = l;
+        if (n == line)
+            at = l;
         else if (l.starts_with('[') && l.ends_with(']'))
-            table = unquote_key(l.substr(l.starts_with("[[") ? 2 : 1, l.size() - (l.starts_with("[[") ? 4 : 2)));
+            table =
+                unquote_key(l.substr(l.starts_with("[[") ? 2 : 1, l.size() - (l.starts_with("[[") ? 4 : 2)));
         start = end + 1;
     }
     const std::size_t eq = at.find('=');

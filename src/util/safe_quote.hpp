@@ -19,7 +19,8 @@ inline std::string safe_quote(std::string_view text, std::size_t limit = 64) {
     while (cut > 0 && cut < text.size() && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
     std::string out(text.substr(0, cut));
     std::replace_if(
-        out.begin(), out.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+        out.begin(), out.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; },
+        '?');
     if (cut < text.size()) out += fmt::format("... ({} bytes)", text.size());
     return out;
 }

@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
+#include <sys/stat.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 
 #include "io/gpio_mock.hpp"
 #include "support/test_support.hpp"
@@ -158,6 +161,7 @@ TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
     EXPECT_FALSE(std::filesystem::exists(rig.dir / "state.toml"))
         << "saved a few seconds after the last change";
     rig.step(2.5 + LiveTuning::save_delay_seconds);
+    finish_state_save(*rig.tuning);  // written on the saver thread
     ASSERT_TRUE(std::filesystem::exists(rig.dir / "state.toml"));
     auto saved = params::load_config_file((rig.dir / "state.toml").string());
     ASSERT_TRUE(saved);
@@ -207,6 +211,7 @@ TEST(LiveTuning, ASaveThatKeepsFailingIsReportedOnce) {
         turn(*rig.gpio, 2.0 + 10.0 * i, 1);
         rig.step(3.0 + 10.0 * i);
         rig.step(3.0 + 10.0 * i + LiveTuning::save_delay_seconds);  // the save, which fails
+        finish_state_save(*rig.tuning);
     }
     EXPECT_EQ(warnings.count(failure), 1);
 
@@ -214,6 +219,7 @@ TEST(LiveTuning, ASaveThatKeepsFailingIsReportedOnce) {
     turn(*rig.gpio, 40.0, 1);
     rig.step(41.0);
     rig.step(41.0 + LiveTuning::save_delay_seconds);
+    finish_state_save(*rig.tuning);
     ASSERT_TRUE(std::filesystem::is_regular_file(rig.dir / "state.toml"));
 
     std::filesystem::remove(rig.dir / "state.toml");
@@ -221,7 +227,44 @@ TEST(LiveTuning, ASaveThatKeepsFailingIsReportedOnce) {
     turn(*rig.gpio, 50.0, 1);
     rig.step(51.0);
     rig.step(51.0 + LiveTuning::save_delay_seconds);
+    finish_state_save(*rig.tuning);
     EXPECT_EQ(warnings.count(failure), 2);
+}
+
+// A save stuck on the disk (an SD card taking seconds to flush, played here by a FIFO in the place of the
+// temporary file, whose open waits for a reader) holds no frame: the steps go on, the knob keeps working,
+// and the save finishes once the disk answers. Before, the frame thread wrote the file itself and waited.
+TEST(LiveTuning, ASlowDiskNeverHoldsAFrame) {
+    Rig rig(knob_config);
+    const std::filesystem::path temp = rig.dir / "state.toml.tmp";
+    ASSERT_EQ(::mkfifo(temp.c_str(), 0600), 0);
+    rig.gpio->set_level("gpiochip0", 17, true, 0);
+    rig.gpio->set_level("gpiochip0", 18, true, 0);
+    rig.step(1.0);
+    turn(*rig.gpio, 1.1, 1);
+    // The steps run on their own thread, so that a step stuck on the FIFO fails the test instead of
+    // hanging it: the reader below is opened (unblocking the writer) whether or not the steps returned.
+    auto frames = std::async(std::launch::async, [&] {
+        rig.step(2.0);
+        rig.step(2.0 + LiveTuning::save_delay_seconds);  // starts the save, which blocks in open()
+        turn(*rig.gpio, 10.0, 1);
+        rig.step(10.5);
+    });
+    const bool frames_went_on = frames.wait_for(std::chrono::seconds(20)) == std::future_status::ready;
+    {
+        std::ifstream reader(temp);  // the disk answers
+        std::string ignored((std::istreambuf_iterator<char>(reader)), {});
+    }
+    frames.wait();
+    EXPECT_TRUE(frames_went_on) << "a frame waited for the state file";
+    EXPECT_NEAR(rig.params.get<ParamId::rain_intensity>(), 0.7f, 1e-5) << "the knob kept working meanwhile";
+    finish_state_save(*rig.tuning);
+    std::filesystem::remove(temp);
+    save_state(*rig.tuning);  // the exit stage writes the value turned while the disk was stuck
+    auto saved = params::load_config_file((rig.dir / "state.toml").string());
+    ASSERT_TRUE(saved) << saved.error().message;
+    ASSERT_EQ(saved->entries.size(), 1u);
+    EXPECT_NEAR(std::get<float>(saved->entries[0].value), 0.7f, 1e-5);
 }
 
 TEST(LiveTuning, AConfigReloadDoesNotUndoAKnob) {
