@@ -1,6 +1,6 @@
-// libpuddle-images.so: reading images through OpenImageIO, behind the C interface of
-// image_module_abi.h. Built as its own module so that only runs which read an image file map
-// OpenImageIO and its dependencies (image_module.cpp loads it). Only the entry point is exported.
+// libpuddle-images.so: reading images through OpenImageIO (PNG through libpng: assets/png_reader.hpp),
+// behind the C interface of image_module_abi.h. Built as its own module so that only runs which read an image
+// file map OpenImageIO and its dependencies (image_module.cpp loads it). Only the entry point is exported.
 
 #include <OpenImageIO/imageio.h>
 
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "assets/image_module_abi.h"
+#include "assets/png_reader.hpp"
 
 namespace {
 
@@ -89,6 +90,8 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const char* path, std::string& wh
 
 int probe(const char* path, PuddleImageInfo* info, char* error, std::size_t error_size) {
     std::string why;
+    if (puddle::assets::png::has_signature(path))
+        return puddle::assets::png::probe(path, info, why) ? 1 : fail(error, error_size, why);
     auto in = open_checked(path, why);
     if (!in) return fail(error, error_size, why);
     const OIIO::ImageSpec& spec = in->spec();
@@ -100,6 +103,8 @@ int probe(const char* path, PuddleImageInfo* info, char* error, std::size_t erro
 int read(const char* path, int want, PuddleImageAlloc alloc, void* context, char* error,
          std::size_t error_size) {
     std::string why;
+    if (puddle::assets::png::has_signature(path))
+        return puddle::assets::png::read(path, want, alloc, context, why) ? 1 : fail(error, error_size, why);
     auto in = open_checked(path, why);
     if (!in) return fail(error, error_size, why);
     const OIIO::ImageSpec& spec = in->spec();
