@@ -51,8 +51,10 @@ public:
     }
     std::string decode_error() const {
         // libpng's default reader says "Read Error" when fread() comes up short.
-        if (std::strcmp(errors_.message, "Read Error") == 0) return "cannot decode: the file ends early (truncated?)";
-        return std::string("cannot decode: ") + (errors_.message[0] ? errors_.message : "unknown libpng error");
+        if (std::strcmp(errors_.message, "Read Error") == 0)
+            return "cannot decode: the file ends early (truncated?)";
+        return std::string("cannot decode: ") +
+               (errors_.message[0] ? errors_.message : "unknown libpng error");
     }
 
     std::FILE* file_;
@@ -91,7 +93,8 @@ bool has_signature(const char* path) {
     std::FILE* f = std::fopen(path, "rb");
     if (!f) return false;
     png_byte head[8] = {};
-    const bool png = std::fread(head, 1, sizeof head, f) == sizeof head && png_sig_cmp(head, 0, sizeof head) == 0;
+    const bool png =
+        std::fread(head, 1, sizeof head, f) == sizeof head && png_sig_cmp(head, 0, sizeof head) == 0;
     std::fclose(f);
     return png;
 }

@@ -27,15 +27,16 @@ struct PngSpec {
 };
 
 // Writes a PNG whose rows are `rows` (bytes as the PNG stores them, 16-bit samples big-endian).
-void write_png_file(const std::string& path, const PngSpec& s, const std::vector<std::vector<png_byte>>& rows) {
+void write_png_file(const std::string& path, const PngSpec& s,
+                    const std::vector<std::vector<png_byte>>& rows) {
     std::FILE* f = std::fopen(path.c_str(), "wb");
     ASSERT_NE(f, nullptr);
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png_create_info_struct(png);
     png_init_io(png, f);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(s.width), static_cast<png_uint_32>(s.height), s.bit_depth,
-                 s.color_type, s.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(s.width), static_cast<png_uint_32>(s.height),
+                 s.bit_depth, s.color_type, s.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (!s.palette.empty()) png_set_PLTE(png, info, s.palette.data(), static_cast<int>(s.palette.size()));
     if (!s.trns_alpha.empty())
         png_set_tRNS(png, info, s.trns_alpha.data(), static_cast<int>(s.trns_alpha.size()), nullptr);
@@ -83,7 +84,8 @@ TEST_F(PngReaderTest, LowBitGreyIsScaledToEightBits) {
 }
 
 TEST_F(PngReaderTest, GreyAlphaAndAGreyTransparentColour) {
-    write_png_file(path("ga.png"), {.width = 2, .height = 1, .bit_depth = 8, .color_type = PNG_COLOR_TYPE_GRAY_ALPHA},
+    write_png_file(path("ga.png"),
+                   {.width = 2, .height = 1, .bit_depth = 8, .color_type = PNG_COLOR_TYPE_GRAY_ALPHA},
                    {{10, 20, 30, 40}});
     auto ga = read_image(path("ga.png"));
     ASSERT_TRUE(ga.ok()) << ga.error().message;
@@ -151,7 +153,8 @@ TEST_F(PngReaderTest, ACorruptFileIsOneLineAndNothingOnStderr) {
     const std::string stderr_text = ::testing::internal::GetCapturedStderr();
     ASSERT_FALSE(cut.ok());
     EXPECT_EQ(cut.error().code, ExitCode::Asset);
-    EXPECT_EQ(cut.error().message, "image: " + path("cut.png") + ": cannot decode: the file ends early (truncated?)");
+    EXPECT_EQ(cut.error().message,
+              "image: " + path("cut.png") + ": cannot decode: the file ends early (truncated?)");
     ASSERT_FALSE(bad_crc.ok());
     EXPECT_EQ(bad_crc.error().message, "image: " + path("crc.png") + ": cannot decode: IDAT: CRC error");
     EXPECT_EQ(stderr_text, "");

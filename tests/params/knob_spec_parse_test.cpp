@@ -8,14 +8,13 @@
 #include <string>
 
 #include "params/config_loader.hpp"
+#include "support/parsed_config.hpp"
 
 namespace puddle::params {
 namespace {
 
 Config config(const char* text) {
-    auto c = parse_config(text, "test.toml");
-    EXPECT_TRUE(c) << c.error().message;
-    return c ? *c : Config{};
+    return test::parsed_config(text);
 }
 
 TEST(ConfigKnobs, ParsesTheThreeKindsWithDefaults) {

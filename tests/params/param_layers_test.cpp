@@ -5,14 +5,13 @@
 #include <gtest/gtest.h>
 
 #include "params/param_docs.hpp"
+#include "support/parsed_config.hpp"
 
 namespace puddle::params {
 namespace {
 
 Config config(const char* text) {
-    auto c = parse_config(text, "test.toml");
-    EXPECT_TRUE(c) << c.error().message;
-    return c ? *c : Config{};
+    return test::parsed_config(text);
 }
 
 ParamLayers layers(std::vector<ConfigEntry> command_line = {}) {
