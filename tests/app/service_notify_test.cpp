@@ -18,37 +18,13 @@
 #include <sstream>
 #include <vector>
 
+#include "support/notify_listener.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::app {
 namespace {
 
-// The systemd side of the notify protocol: a datagram socket the test listens on.
-class NotifyListener {
-public:
-    explicit NotifyListener(const std::filesystem::path& path) : path_(path.string()) {
-        fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
-        sockaddr_un addr{};
-        addr.sun_family = AF_UNIX;
-        std::snprintf(addr.sun_path, sizeof addr.sun_path, "%s", path_.c_str());
-        ok_ = ::bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0;
-    }
-    ~NotifyListener() { ::close(fd_); }
-    bool ok() const { return ok_; }
-    const std::string& path() const { return path_; }
-    std::vector<std::string> received() {
-        std::vector<std::string> out;
-        char buf[512];
-        for (ssize_t n; (n = ::recv(fd_, buf, sizeof buf, 0)) > 0;)
-            out.emplace_back(buf, static_cast<std::size_t>(n));
-        return out;
-    }
-
-private:
-    std::string path_;
-    int fd_ = -1;
-    bool ok_ = false;
-};
+using test::NotifyListener;
 
 // Only whole microseconds above zero are a watchdog period; "-5" had been read as 2^64 - 5 microseconds.
 TEST(ServiceNotify, AWatchdogPeriodThatIsNoPositiveWholeNumberMeansNoPings) {
