@@ -17,7 +17,6 @@
 #include "params/config_loader.hpp"
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
-#include "platform/egl_context.hpp"
 
 namespace puddle::app {
 
