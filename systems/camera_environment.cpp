@@ -77,7 +77,7 @@ const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::Camer
 
 Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
     env.built = true;
-    env.support = gpu::probe_external_image_support();
+    env.support = device.external_image_support();
     env.zero_copy = env.support.dmabuf_import;
     auto make = [&](const char* label, const char* file, std::vector<std::string> defines,
                     std::vector<std::string> textures, gpu::Pipeline& out) -> Result<void> {

@@ -18,7 +18,6 @@
 #include "params/state_store.hpp"
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
-#include "platform/egl_context.hpp"
 
 namespace puddle::app {
 

@@ -7,7 +7,7 @@
 namespace puddle::gpu {
 
 namespace detail {
-void delete_buffer(GLuint id) {
+void delete_buffer(std::uint32_t id) {
     glDeleteBuffers(1, &id);
 }
 }  // namespace detail

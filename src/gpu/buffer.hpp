@@ -2,6 +2,7 @@
 // A uniform buffer (std140 data shared by a pass, e.g. the live drops). Made by Device::create_buffer.
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -15,13 +16,13 @@ struct BufferDesc {
 };
 
 namespace detail {
-void delete_buffer(GLuint id);
+void delete_buffer(std::uint32_t id);
 }
 
 class Buffer {
 public:
     Buffer() = default;
-    GLuint id() const { return id_.get(); }
+    std::uint32_t id() const { return id_.get(); }  // the GL buffer name
     std::size_t size() const { return size_; }
     // Replaces bytes [offset, offset + data.size()); never reallocates.
     void write(std::span<const std::byte> data, std::size_t offset = 0);

@@ -7,13 +7,16 @@
 #include <cstring>
 
 #include "gpu/gl.hpp"
+#include "gpu/gl_debug_labels.hpp"
 #include "gpu/gl_errors.hpp"
+#include "gpu/gl_extensions.hpp"
+#include "gpu/gl_formats.hpp"
 #include "gpu/program_link.hpp"
 
 namespace puddle::gpu {
 
 namespace detail {
-void delete_vertex_array(GLuint id) {
+void delete_vertex_array(std::uint32_t id) {
     glDeleteVertexArrays(1, &id);
 }
 }  // namespace detail
@@ -34,8 +37,9 @@ GLint gl_wrap(Wrap w) {
 
 }  // namespace
 
-Device::Device(const DeviceOptions& options) : caps_(probe_capabilities(options.forbid_float_targets)) {
-    if (caps_.debug_labels) labels_.load();
+Device::Device(const DeviceOptions& options)
+    : caps_(probe_capabilities(options.forbid_float_targets)),
+      extensions_(std::make_shared<const GlExtensions>(GlExtensions::load())) {
     GLuint vao = 0;
     glGenVertexArrays(1, &vao);
     empty_vao_ = GlHandle<detail::delete_vertex_array>(vao);
@@ -68,7 +72,7 @@ Result<Texture> Device::create_texture(const TextureDesc& desc) {
                     desc.mip_levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, std::max(0, desc.mip_levels - 1));
-    labels_.label(GL_TEXTURE, id, desc.label);
+    label_object(*extensions_, GL_TEXTURE, id, desc.label);
     if (desc.render_target) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer());
         const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
@@ -97,7 +101,7 @@ Sampler Device::create_sampler(const SamplerDesc& desc) {
     if (caps_.anisotropic_filtering && desc.anisotropy > 1.0f)
         glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT,
                             std::min(desc.anisotropy, caps_.max_anisotropy));
-    labels_.label(GL_SAMPLER, id, desc.label);
+    label_object(*extensions_, GL_SAMPLER, id, desc.label);
     return s;
 }
 
@@ -113,7 +117,7 @@ Result<Buffer> Device::create_buffer(const BufferDesc& desc) {
     if (const GLenum e = take_gl_error(); e != GL_NO_ERROR)
         return make_error(exit_code_for(e), "gpu: buffer '{}' ({} bytes): glBufferData: {}", desc.label,
                           desc.size, gl_error_name(e));
-    labels_.label(GL_BUFFER_KHR, id, desc.label);
+    label_object(*extensions_, GL_BUFFER_KHR, id, desc.label);
     return b;
 }
 
@@ -157,7 +161,7 @@ Result<Pipeline> Device::adopt_program(const PipelineDesc& desc, GlHandle<detail
     p.program_ = std::move(program);
     const GLuint prog = p.program_.get();
     glUseProgram(prog);  // binding it makes a program linked in the worker's context current here
-    labels_.label(GL_PROGRAM_KHR, prog, desc.label);
+    label_object(*extensions_, GL_PROGRAM_KHR, prog, desc.label);
 
     GLint count = 0, max_len = 0;
     glGetProgramiv(prog, GL_ACTIVE_UNIFORMS, &count);
@@ -185,7 +189,7 @@ Result<Pipeline> Device::adopt_program(const PipelineDesc& desc, GlHandle<detail
 }
 
 RenderPass Device::begin_pass(const RenderPassDesc& desc) {
-    return RenderPass(desc, labels_);
+    return RenderPass(desc, *extensions_);
 }
 
 void Device::read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba) {

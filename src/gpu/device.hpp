@@ -1,6 +1,6 @@
 #pragma once
 // The Device: the one creation path for GPU objects (create_* from labelled descriptors) and the owner
-// of what every pass shares (the empty vertex array for fullscreen triangles, debug label entry points).
+// of what every pass shares (the empty vertex array for fullscreen triangles, the extension entry points).
 // Made once a context is current (by a display backend); lives as a World resource.
 
 #include <cstdint>
@@ -12,7 +12,6 @@
 
 #include "gpu/buffer.hpp"
 #include "gpu/capabilities.hpp"
-#include "gpu/debug_labels.hpp"
 #include "gpu/external_image.hpp"
 #include "gpu/frame_target.hpp"
 #include "gpu/handle.hpp"
@@ -32,8 +31,10 @@ struct DeviceOptions {
     bool background_compiles = false;
 };
 
+struct GlExtensions;  // gpu/gl_extensions.hpp, private to the gpu layer
+
 namespace detail {
-void delete_vertex_array(GLuint id);
+void delete_vertex_array(std::uint32_t id);
 }
 
 // A pipeline being built for the frame loop (Device::request_pipeline); empty when none is.
@@ -50,6 +51,8 @@ public:
     Device& operator=(Device&&) noexcept = default;
 
     const Capabilities& caps() const { return caps_; }
+    // The extension entry points, looked up once when the Device was made (gpu/gl_extensions.hpp).
+    const GlExtensions& extensions() const { return *extensions_; }
 
     // Errors name the label, what was asked for and why: "gpu: texture 'environment' (cube 6 x 4096x4096
     // SRGB8_ALPHA8, 13 levels, 512.0 MiB): glTexStorage2D: GL_OUT_OF_MEMORY". Exit code GpuMemory for
@@ -74,6 +77,8 @@ public:
     RenderPass begin_pass(const RenderPassDesc& desc);
     // An EGLImage (from a dmabuf or a GL texture) as an External texture (external_image.cpp).
     Result<ExternalImage> create_external_image(const ExternalImageDesc& desc);
+    // What create_external_image can import with this context and its EGL display.
+    ExternalImageSupport external_image_support() const;
 
     // Reads a frame into `rgba` (size.x * size.y * 4 bytes), top row first, as PNG files expect.
     void read_pixels(const FrameTarget& target, std::span<std::uint8_t> rgba);
@@ -95,7 +100,7 @@ private:
     std::unique_ptr<PipelineCompiler> compiler_;  // first: its worker stops before the device's objects die
     bool worker_failed_ = false;                  // its context could not be made current: build at once
     Capabilities caps_;
-    DebugLabels labels_;
+    std::shared_ptr<const GlExtensions> extensions_;  // an ExternalImage keeps it for eglDestroyImageKHR
     GlHandle<detail::delete_vertex_array> empty_vao_;
 };
 

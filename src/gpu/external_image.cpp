@@ -1,44 +1,19 @@
 #include "gpu/external_image.hpp"
 
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 #include <drm_fourcc.h>
 
-#include <cstring>
 #include <utility>
 #include <vector>
 
 #include "gpu/device.hpp"
 #include "gpu/gl.hpp"
+#include "gpu/gl_debug_labels.hpp"
 #include "gpu/gl_errors.hpp"
+#include "gpu/gl_extensions.hpp"
 
 namespace puddle::gpu {
 
 namespace {
-
-// Extension entry points, looked up once.
-struct ImageEntryPoints {
-    PFNEGLCREATEIMAGEKHRPROC create = nullptr;
-    PFNEGLDESTROYIMAGEKHRPROC destroy = nullptr;
-    PFNGLEGLIMAGETARGETTEXTURE2DOESPROC target_texture = nullptr;
-};
-
-const ImageEntryPoints& entry_points() {
-    static const ImageEntryPoints table{
-        reinterpret_cast<PFNEGLCREATEIMAGEKHRPROC>(eglGetProcAddress("eglCreateImageKHR")),
-        reinterpret_cast<PFNEGLDESTROYIMAGEKHRPROC>(eglGetProcAddress("eglDestroyImageKHR")),
-        reinterpret_cast<PFNGLEGLIMAGETARGETTEXTURE2DOESPROC>(
-            eglGetProcAddress("glEGLImageTargetTexture2DOES"))};
-    return table;
-}
-
-bool has_word(const char* list, const char* word) {
-    if (!list) return false;
-    const std::size_t n = std::strlen(word);
-    for (const char* p = std::strstr(list, word); p; p = std::strstr(p + n, word))
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-    return false;
-}
 
 const char* egl_error_text(EGLint e) {
     switch (e) {
@@ -61,31 +36,28 @@ const char* egl_error_text(EGLint e) {
 
 }  // namespace
 
-ExternalImageSupport probe_external_image_support() {
+ExternalImageSupport Device::external_image_support() const {
     ExternalImageSupport s;
     const EGLDisplay display = eglGetCurrentDisplay();
     const char* egl = display != EGL_NO_DISPLAY ? eglQueryString(display, EGL_EXTENSIONS) : nullptr;
-    const ImageEntryPoints& e = entry_points();
-    const bool entry = e.create && e.destroy && e.target_texture;
-    GLint n = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &n);
-    for (GLint i = 0; i < n; ++i)
-        if (const auto* x =
-                reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i))))
-            if (std::strcmp(x, "GL_OES_EGL_image_external_essl3") == 0) s.external_sampler = entry;
-    s.dmabuf_import = s.external_sampler && has_word(egl, "EGL_EXT_image_dma_buf_import");
-    s.texture_images = s.external_sampler && has_word(egl, "EGL_KHR_gl_texture_2D_image");
+    const GlExtensions& e = *extensions_;
+    const bool entry = e.eglCreateImageKHR && e.eglDestroyImageKHR && e.glEGLImageTargetTexture2DOES;
+    s.external_sampler = entry && caps_.has("GL_OES_EGL_image_external_essl3");
+    s.dmabuf_import = s.external_sampler && has_extension(egl, "EGL_EXT_image_dma_buf_import");
+    s.texture_images = s.external_sampler && has_extension(egl, "EGL_KHR_gl_texture_2D_image");
     return s;
 }
 
 ExternalImage::ExternalImage(ExternalImage&& o) noexcept
-    : display_(std::exchange(o.display_, nullptr)),
+    : extensions_(std::move(o.extensions_)),
+      display_(std::exchange(o.display_, nullptr)),
       image_(std::exchange(o.image_, nullptr)),
       texture_(std::move(o.texture_)) {}
 
 ExternalImage& ExternalImage::operator=(ExternalImage&& o) noexcept {
     if (this != &o) {
         reset();
+        extensions_ = std::move(o.extensions_);
         display_ = std::exchange(o.display_, nullptr);
         image_ = std::exchange(o.image_, nullptr);
         texture_ = std::move(o.texture_);
@@ -99,22 +71,23 @@ ExternalImage::~ExternalImage() {
 
 void ExternalImage::reset() {
     texture_ = Texture();  // the texture lets go of the image first
-    if (image_) entry_points().destroy(static_cast<EGLDisplay>(display_), static_cast<EGLImage>(image_));
+    if (image_)
+        extensions_->eglDestroyImageKHR(static_cast<EGLDisplay>(display_), static_cast<EGLImage>(image_));
     image_ = nullptr;
 }
 
 Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& desc) {
-    const ImageEntryPoints& e = entry_points();
-    if (!e.create || !e.destroy || !e.target_texture)
+    const GlExtensions& e = *extensions_;
+    if (!e.eglCreateImageKHR || !e.eglDestroyImageKHR || !e.glEGLImageTargetTexture2DOES)
         return make_error(ExitCode::Runtime, "gpu: external image '{}': EGL image entry points missing",
                           desc.label);
     const EGLDisplay display = eglGetCurrentDisplay();
     EGLImage image = EGL_NO_IMAGE_KHR;
     if (desc.source) {
         const EGLint attribs[] = {EGL_GL_TEXTURE_LEVEL_KHR, 0, EGL_NONE};
-        image = e.create(display, eglGetCurrentContext(), EGL_GL_TEXTURE_2D_KHR,
-                         reinterpret_cast<EGLClientBuffer>(static_cast<std::uintptr_t>(desc.source->id())),
-                         attribs);
+        image = e.eglCreateImageKHR(
+            display, eglGetCurrentContext(), EGL_GL_TEXTURE_2D_KHR,
+            reinterpret_cast<EGLClientBuffer>(static_cast<std::uintptr_t>(desc.source->id())), attribs);
     } else {
         std::vector<EGLint> a = {
             EGL_WIDTH,
@@ -139,12 +112,13 @@ Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& des
                                static_cast<EGLint>(desc.planes[1].pitch)});
         }
         a.push_back(EGL_NONE);
-        image = e.create(display, EGL_NO_CONTEXT, EGL_LINUX_DMA_BUF_EXT, nullptr, a.data());
+        image = e.eglCreateImageKHR(display, EGL_NO_CONTEXT, EGL_LINUX_DMA_BUF_EXT, nullptr, a.data());
     }
     if (image == EGL_NO_IMAGE_KHR)
         return make_error(ExitCode::Runtime, "gpu: external image '{}': eglCreateImageKHR: {}", desc.label,
                           egl_error_text(eglGetError()));
     ExternalImage out;
+    out.extensions_ = extensions_;
     out.display_ = display;
     out.image_ = image;
     GLuint id = 0;
@@ -156,7 +130,7 @@ Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& des
                                      .height = desc.source ? desc.source->height() : desc.height};
     (void)take_gl_error();
     glBindTexture(GL_TEXTURE_EXTERNAL_OES, id);
-    e.target_texture(GL_TEXTURE_EXTERNAL_OES, static_cast<GLeglImageOES>(image));
+    e.glEGLImageTargetTexture2DOES(GL_TEXTURE_EXTERNAL_OES, static_cast<GLeglImageOES>(image));
     // A driver may make the image but refuse it as a texture (a format its sampler cannot read).
     if (const GLenum error = take_gl_error(); error != GL_NO_ERROR)
         return make_error(exit_code_for(error),
@@ -164,7 +138,7 @@ Result<ExternalImage> Device::create_external_image(const ExternalImageDesc& des
                           out.texture_.width(), out.texture_.height(), gl_error_name(error));
     glTexParameteri(GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    labels_.label(GL_TEXTURE, id, desc.label);
+    label_object(*extensions_, GL_TEXTURE, id, desc.label);
     return out;
 }
 

@@ -5,19 +5,21 @@
 // (EGL_KHR_gl_texture_2D_image), which exercises the same sampler path. Move-only; destroys the image.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "gpu/texture.hpp"
 
 namespace puddle::gpu {
 
-// What the current EGL display and GL context can import.
+struct GlExtensions;  // gpu/gl_extensions.hpp, private to the gpu layer
+
+// What the current EGL display and GL context can import (Device::external_image_support).
 struct ExternalImageSupport {
     bool external_sampler = false;  // GL_OES_EGL_image_external_essl3
     bool dmabuf_import = false;     // EGL_EXT_image_dma_buf_import
     bool texture_images = false;    // EGL_KHR_gl_texture_2D_image
 };
-ExternalImageSupport probe_external_image_support();
 
 struct DmabufPlane {
     int fd = -1;
@@ -54,8 +56,9 @@ public:
 private:
     friend class Device;
     void reset();
-    void* display_ = nullptr;  // EGLDisplay
-    void* image_ = nullptr;    // EGLImage
+    std::shared_ptr<const GlExtensions> extensions_;  // eglDestroyImageKHR
+    void* display_ = nullptr;                         // EGLDisplay
+    void* image_ = nullptr;                           // EGLImage
     Texture texture_;
 };
 

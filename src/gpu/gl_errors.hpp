@@ -1,11 +1,11 @@
 #pragma once
 // GL errors as values: what Device::create_* checks after the driver allocates storage. GL records errors
 // in sticky flags read by glGetError (GLES 3.0 spec section 2.5), so they are drained before a call and
-// read after it, and only that call's error is reported.
+// read after it, and only that call's error is reported. Private to the gpu layer (its API is GLenum).
 
-#include <string_view>
+#include <string>
 
-#include "gpu/handle.hpp"
+#include "gpu/gl.hpp"
 #include "util/result.hpp"
 
 namespace puddle::gpu {

@@ -1,17 +1,18 @@
 #pragma once
-// A move-only owner of one GL object name; Deleter is called with the name when it dies.
+// A move-only owner of one GL object name; Delete is called with the name when it dies. The name is a
+// plain std::uint32_t (what GLuint is; gpu/gl.hpp checks), so this header and every public gpu header
+// that holds a handle stay free of GL's headers.
 
+#include <cstdint>
 #include <utility>
-
-#include "gpu/gl.hpp"
 
 namespace puddle::gpu {
 
-template <void (*Delete)(GLuint)>
+template <void (*Delete)(std::uint32_t)>
 class GlHandle {
 public:
     GlHandle() = default;
-    explicit GlHandle(GLuint id) : id_(id) {}
+    explicit GlHandle(std::uint32_t id) : id_(id) {}
     GlHandle(GlHandle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
     GlHandle& operator=(GlHandle&& o) noexcept {
         if (this != &o) {
@@ -23,15 +24,16 @@ public:
     GlHandle(const GlHandle&) = delete;
     GlHandle& operator=(const GlHandle&) = delete;
     ~GlHandle() { reset(); }
-    GLuint get() const { return id_; }
-    GLuint release() { return std::exchange(id_, 0); }
+    // The GL object name (0: none).
+    std::uint32_t get() const { return id_; }
+    std::uint32_t release() { return std::exchange(id_, 0); }
     void reset() {
         if (id_) Delete(std::exchange(id_, 0));
     }
     explicit operator bool() const { return id_ != 0; }
 
 private:
-    GLuint id_ = 0;
+    std::uint32_t id_ = 0;
 };
 
 }  // namespace puddle::gpu

@@ -2,6 +2,7 @@
 // A pipeline: a linked vertex + fragment program plus the bindings it expects, like a WebGPU render
 // pipeline with its bind group layout written into the descriptor. Made by Device::create_pipeline.
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,7 +27,7 @@ struct PipelineDesc {
 };
 
 namespace detail {
-void delete_program(GLuint id);
+void delete_program(std::uint32_t id);
 }
 
 // An active uniform's location, looked up once (Pipeline::uniform) so that a pass sets it every frame
@@ -39,10 +40,10 @@ struct UniformLocation {
 class Pipeline {
 public:
     Pipeline() = default;
-    GLuint id() const { return program_.get(); }
+    std::uint32_t id() const { return program_.get(); }  // the GL program name; 0 until built
     const std::string& label() const { return label_; }
     // Location of an active uniform, or -1 when the shader does not use it (setting it is then a no-op).
-    GLint location(std::string_view uniform) const;
+    int location(std::string_view uniform) const;
     UniformLocation uniform(std::string_view name) const { return {location(name)}; }
     std::span<const std::string> uniform_names() const { return names_; }
     Blend blend() const { return blend_; }
@@ -52,7 +53,7 @@ private:
     GlHandle<detail::delete_program> program_;
     std::string label_;
     std::vector<std::string> names_;
-    std::vector<GLint> locations_;
+    std::vector<int> locations_;
     Blend blend_ = Blend::Replace;
 };
 

@@ -4,16 +4,16 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/buffer.hpp"
-#include "gpu/debug_labels.hpp"
 #include "gpu/gl.hpp"
+#include "gpu/gl_debug_labels.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/texture.hpp"
 
 namespace puddle::gpu {
 
-RenderPass::RenderPass(const RenderPassDesc& desc, const DebugLabels& labels)
-    : store_(desc.store), labels_(&labels) {
-    labels_->push_group(desc.label);
+RenderPass::RenderPass(const RenderPassDesc& desc, const GlExtensions& extensions)
+    : store_(desc.store), extensions_(&extensions) {
+    push_debug_group(*extensions_, desc.label);
     is_default_framebuffer_ = desc.target.texture == nullptr;
     glBindFramebuffer(
         GL_FRAMEBUFFER,
@@ -137,7 +137,7 @@ void RenderPass::end() {
         glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);
     }
     if (scissored_) glDisable(GL_SCISSOR_TEST);
-    labels_->pop_group();
+    pop_debug_group(*extensions_);
 }
 
 }  // namespace puddle::gpu

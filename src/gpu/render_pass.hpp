@@ -17,8 +17,8 @@
 namespace puddle::gpu {
 
 class Buffer;
-class DebugLabels;
 class Device;
+struct GlExtensions;
 class Pipeline;
 class Sampler;
 class Texture;
@@ -76,13 +76,13 @@ public:
 
 private:
     friend class Device;
-    RenderPass(const RenderPassDesc& desc, const DebugLabels& labels);
+    RenderPass(const RenderPassDesc& desc, const GlExtensions& extensions);
     const Pipeline* pipeline_ = nullptr;
     StoreOp store_ = StoreOp::Store;
     bool is_default_framebuffer_ = false;
     bool scissored_ = false;
     bool ended_ = false;
-    const DebugLabels* labels_ = nullptr;
+    const GlExtensions* extensions_ = nullptr;  // the Device's: debug groups
 };
 
 }  // namespace puddle::gpu

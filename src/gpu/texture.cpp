@@ -6,42 +6,21 @@
 #include <cassert>
 
 #include "gpu/gl.hpp"
+#include "gpu/gl_formats.hpp"
 
 namespace puddle::gpu {
 
 namespace detail {
-void delete_texture(GLuint id) {
+void delete_texture(std::uint32_t id) {
     glDeleteTextures(1, &id);
 }
-void delete_framebuffer(GLuint id) {
+void delete_framebuffer(std::uint32_t id) {
     glDeleteFramebuffers(1, &id);
 }
-void delete_sampler(GLuint id) {
+void delete_sampler(std::uint32_t id) {
     glDeleteSamplers(1, &id);
 }
 }  // namespace detail
-
-GlFormat gl_format(TextureFormat f) {
-    switch (f) {
-        case TextureFormat::RGBA8:
-            return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
-        case TextureFormat::SRGB8_A8:
-            return {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
-        case TextureFormat::RG32F:
-            return {GL_RG32F, GL_RG, GL_FLOAT, 2, 4};
-        case TextureFormat::RG32I:
-            return {GL_RG32I, GL_RG_INTEGER, GL_INT, 2, 4};
-        case TextureFormat::RGBA16F:
-            return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, 4};
-        case TextureFormat::RGBA32F:
-            return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, 4};
-        case TextureFormat::R8:
-            return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1};
-        case TextureFormat::RG8:
-            return {GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2, 1};
-    }
-    return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 1};
-}
 
 const char* format_name(TextureFormat f) {
     switch (f) {
@@ -147,7 +126,7 @@ void Texture::generate_mipmaps() {
     glGenerateMipmap(target);
 }
 
-GLuint Texture::framebuffer(int face, int level) const {
+std::uint32_t Texture::framebuffer(int face, int level) const {
     const bool cube = desc_.kind == TextureKind::Cube;
     const std::size_t slot = static_cast<std::size_t>(cube ? face : 0);
     auto& fbo = fbos_[slot];

@@ -50,9 +50,9 @@ std::uint64_t storage_bytes(const TextureDesc& desc);
 std::string describe_storage(const TextureDesc& desc);
 
 namespace detail {
-void delete_texture(GLuint id);
-void delete_framebuffer(GLuint id);
-void delete_sampler(GLuint id);
+void delete_texture(std::uint32_t id);
+void delete_framebuffer(std::uint32_t id);
+void delete_sampler(std::uint32_t id);
 }  // namespace detail
 
 class Texture {
@@ -61,7 +61,7 @@ public:
     const TextureDesc& desc() const { return desc_; }
     int width() const { return desc_.width; }
     int height() const { return desc_.height; }
-    GLuint id() const { return id_.get(); }
+    std::uint32_t id() const { return id_.get(); }  // the GL texture name, for tests and interop
     explicit operator bool() const { return static_cast<bool>(id_); }
 
     // Uploads a whole level (face: 0..5 for cube maps, GL order +X,-X,+Y,-Y,+Z,-Z). The data layout follows
@@ -75,8 +75,8 @@ public:
     // Level 0 of a 2D texture from rows `row_bytes` apart (a driver's bytesperline, often padded).
     void upload_rows(std::span<const std::byte> data, int row_bytes);
     void generate_mipmaps();
-    // The framebuffer that renders into a level (of one face for cube maps), made on first use.
-    GLuint framebuffer(int face = 0, int level = 0) const;
+    // The GL framebuffer name that renders into a level (of one face for cube maps), made on first use.
+    std::uint32_t framebuffer(int face = 0, int level = 0) const;
 
 private:
     friend class Device;
@@ -101,20 +101,13 @@ struct SamplerDesc {
 class Sampler {
 public:
     Sampler() = default;
-    GLuint id() const { return id_.get(); }
+    std::uint32_t id() const { return id_.get(); }  // the GL sampler name
 
 private:
     friend class Device;
     GlHandle<detail::delete_sampler> id_;
 };
 
-// GL internal format, pixel format and type for uploads of each TextureFormat.
-struct GlFormat {
-    GLenum internal, format, type;
-    int channels;
-    int bytes_per_channel;
-};
-GlFormat gl_format(TextureFormat f);
 const char* format_name(TextureFormat f);
 // Bytes per texel as stored (RGBA16F is 8, although it uploads from floats).
 int bytes_per_texel(TextureFormat f);

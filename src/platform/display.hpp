@@ -14,6 +14,10 @@
 
 namespace puddle::platform {
 
+// Whether the EGL display of the current context has `name` (false with no current context); defined in
+// egl_context.cpp, declared here so that callers need no EGL header.
+bool current_display_has_extension(std::string_view name);
+
 enum class BackendKind { Auto, Headless, Kms, Window };
 std::string_view backend_name(BackendKind k);
 

@@ -5,25 +5,17 @@
 #include <utility>
 #include <vector>
 
+#include "gpu/gl_extensions.hpp"
+#include "platform/display.hpp"
+
 namespace puddle::platform {
 
 namespace {
 
-// Entry points from EGL_EXT_platform_base, looked up once.
-struct EglExtensions {
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display = nullptr;
-    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_platform_window_surface = nullptr;
-};
-
-const EglExtensions& egl_extensions() {
-    static const EglExtensions table = [] {
-        EglExtensions t;
-        t.get_platform_display =
-            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-        t.create_platform_window_surface = reinterpret_cast<PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC>(
-            eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT"));
-        return t;
-    }();
+// The extension table (gpu/gl_extensions.hpp) as it is before any display exists: its client entries,
+// EGL_EXT_platform_base, are what making a display and a window surface need. Looked up once.
+const gpu::GlExtensions& client_extensions() {
+    static const gpu::GlExtensions table = gpu::GlExtensions::load();
     return table;
 }
 
@@ -90,12 +82,12 @@ Result<EglContext> EglContext::create(const EglRequest& request) {
     const char* client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     EglContext ctx;
     if (request.platform != 0) {
-        if (!egl_extensions().get_platform_display)
+        if (!client_extensions().eglGetPlatformDisplayEXT)
             return make_error(ExitCode::Display,
                               "egl: eglGetPlatformDisplayEXT missing (client extensions: {})",
                               client_ext ? client_ext : "none");
         ctx.display_ =
-            egl_extensions().get_platform_display(request.platform, request.native_display, nullptr);
+            client_extensions().eglGetPlatformDisplayEXT(request.platform, request.native_display, nullptr);
     } else {
         ctx.display_ = eglGetDisplay(static_cast<EGLNativeDisplayType>(request.native_display));
     }
@@ -190,8 +182,9 @@ void EglContext::release() {
 }
 
 Result<void> EglContext::attach_window(void* native_window) {
-    if (egl_extensions().create_platform_window_surface)
-        surface_ = egl_extensions().create_platform_window_surface(display_, config_, native_window, nullptr);
+    if (client_extensions().eglCreatePlatformWindowSurfaceEXT)
+        surface_ =
+            client_extensions().eglCreatePlatformWindowSurfaceEXT(display_, config_, native_window, nullptr);
     else
         surface_ = eglCreateWindowSurface(display_, config_,
                                           reinterpret_cast<EGLNativeWindowType>(native_window), nullptr);

@@ -1,6 +1,7 @@
 #pragma once
-// An EGL display + GLES 3 context, shared by every backend. Extension entry points are looked up once,
-// here. Move-only; the destructor releases the context, surfaces and the display connection.
+// An EGL display + GLES 3 context, shared by every backend. Private to src/platform (it includes EGL);
+// extension entry points come from the one table, gpu/gl_extensions.hpp. Move-only; the destructor releases
+// the context, surfaces and the display connection.
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -61,8 +62,5 @@ private:
 
 // eglGetError() as a name, for messages: "EGL_BAD_MATCH".
 const char* egl_error_name(EGLint error);
-
-// Whether the EGL display of the current context has `name` (false with no current context).
-bool current_display_has_extension(std::string_view name);
 
 }  // namespace puddle::platform

@@ -16,7 +16,6 @@
 #include "app/version.hpp"
 #include "gpu/device.hpp"
 #include "platform/display.hpp"
-#include "platform/egl_context.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::test {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gpu/device.hpp"
+#include "gpu/gl_formats.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace puddle::gpu {
