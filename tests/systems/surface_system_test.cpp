@@ -1,0 +1,71 @@
+// The surface pass (systems/surface_system.hpp): each surface texel holds the field's height there and its
+// central differences one texel apart (hL - hR, hD - hU), clamped at the edges, as surface.frag says and
+// the render pass relies on. Checked texel by texel against the field read back from the GPU.
+#include "systems/surface_system.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "support/gpu_fixture.hpp"
+#include "systems/wave_test_support.hpp"
+
+namespace puddle::test {
+namespace {
+
+constexpr int N = 64;
+
+struct SurfaceTexel {
+    float height, dx, dz;
+};
+
+std::vector<SurfaceTexel> read_surface(app::Engine& e) {
+    const auto& surface = e.world().resource<systems::Surface>();
+    const std::vector<float> t = e.device().read_texture(surface.texture);
+    auto decode = [&](float v) { return surface.unorm ? (v * 255.0f - 128.0f) / 127.0f * 4.0f : v; };
+    std::vector<SurfaceTexel> out(t.size() / 4);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = {decode(t[4 * i]), decode(t[4 * i + 1]), decode(t[4 * i + 2])};
+    return out;
+}
+
+TEST(SurfaceSystem, HoldsTheHeightAndItsCentralDifferencesClampedAtTheEdges) {
+    auto e = make_engine(make_params({"wave.resolution=" + std::to_string(N), "rain.intensity=0"}), {32, 18});
+    ASSERT_TRUE(e);
+    step(*e, {{20.5f, 30.5f, 1.0f}, {2.5f, 61.5f, -0.5f}});  // one drop near an edge, to test the clamp
+    for (int i = 0; i < 12; ++i) step(*e);
+    auto& w = e->world();
+    systems::surface_system(e->device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());
+    const Field f = read_field(*e);
+    const std::vector<SurfaceTexel> s = read_surface(*e);
+    ASSERT_EQ(s.size(), std::size_t(N) * N);
+    const bool unorm = w.resource<systems::Surface>().unorm;
+    const double tolerance = unorm ? 8.0 / 254.0 : 2e-3;  // a byte step of [-4, 4], or half-float rounding
+    auto h = [&](int x, int y) { return f.cur(std::clamp(x, 0, N - 1), std::clamp(y, 0, N - 1)); };
+    double peak = 0, worst = 0;
+    for (int y = 0; y < N; ++y)
+        for (int x = 0; x < N; ++x) {
+            const SurfaceTexel& t = s[std::size_t(y) * N + x];
+            peak = std::max(peak, std::abs(h(x, y)));
+            worst = std::max({worst, std::abs(t.height - h(x, y)), std::abs(t.dx - (h(x - 1, y) - h(x + 1, y))),
+                              std::abs(t.dz - (h(x, y - 1) - h(x, y + 1)))});
+        }
+    ASSERT_GT(peak, 0.01) << "the drops made waves";
+    EXPECT_LT(worst, tolerance * std::max(1.0, peak));
+}
+
+TEST(SurfaceSystem, StillWaterIsFlatInEveryTexel) {
+    auto e = make_engine(make_params({"wave.resolution=" + std::to_string(N), "rain.intensity=0"}), {32, 18});
+    ASSERT_TRUE(e);
+    auto& w = e->world();
+    systems::surface_system(e->device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());
+    for (const SurfaceTexel& t : read_surface(*e)) {
+        ASSERT_EQ(t.height, 0.0f);
+        ASSERT_EQ(t.dx, 0.0f);
+        ASSERT_EQ(t.dz, 0.0f);
+    }
+}
+
+}  // namespace
+}  // namespace puddle::test
