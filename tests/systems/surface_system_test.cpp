@@ -48,8 +48,9 @@ TEST(SurfaceSystem, HoldsTheHeightAndItsCentralDifferencesClampedAtTheEdges) {
         for (int x = 0; x < N; ++x) {
             const SurfaceTexel& t = s[std::size_t(y) * N + x];
             peak = std::max(peak, std::abs(h(x, y)));
-            worst = std::max({worst, std::abs(t.height - h(x, y)), std::abs(t.dx - (h(x - 1, y) - h(x + 1, y))),
-                              std::abs(t.dz - (h(x, y - 1) - h(x, y + 1)))});
+            worst =
+                std::max({worst, std::abs(t.height - h(x, y)), std::abs(t.dx - (h(x - 1, y) - h(x + 1, y))),
+                          std::abs(t.dz - (h(x, y - 1) - h(x, y + 1)))});
         }
     ASSERT_GT(peak, 0.01) << "the drops made waves";
     EXPECT_LT(worst, tolerance * std::max(1.0, peak));

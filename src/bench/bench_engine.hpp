@@ -1,0 +1,57 @@
+#pragma once
+// The engines puddle-bench measures: one headless engine per frame size (one at a time: each owns an EGL
+// context it makes current), the floor pass's objects beside it, and the timing loop every benchmark
+// shares. Every measurement ends with Device::finish() inside the timed region: GL calls only queue work,
+// so without it a pass would look as cheap as its API calls.
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "app/engine.hpp"
+
+namespace puddle::bench {
+
+inline constexpr std::array<glm::ivec2, 2> sizes{glm::ivec2{1280, 720}, glm::ivec2{1920, 1080}};
+inline constexpr std::array<const char*, 2> methods{"intersect", "raymarch"};
+
+// The engine for one frame size plus the floor pass's own objects.
+struct Bench {
+    glm::ivec2 size{};
+    std::unique_ptr<app::Engine> engine;
+    gpu::Pipeline floor;
+    gpu::Texture source;
+    gpu::Sampler sampler;
+};
+
+std::string size_name(glm::ivec2 s);
+// "llvmpipe (LLVM 15.0.6, 256 bits) (OpenGL ES 3.2 Mesa 22.3.6)", once an engine was made.
+const std::string& renderer();
+
+// The engine of `size`, made on first use (a rainy second already run). Benchmarks are registered size by
+// size, so each size is built once; the old engine goes first. Null, with the benchmark skipped and the
+// reason given, when it cannot be made.
+Bench* bench_for(glm::ivec2 size, benchmark::State& state);
+// The engine made last, or null.
+Bench* current_bench();
+// Releases the engine and everything made in its context (call before exit, ahead of driver teardown).
+void release_benches();
+
+// One untimed run first (llvmpipe compiles shader variants on first draw), then the timed loop.
+template <class Work>
+void measure(benchmark::State& state, gpu::Device& device, Work&& work) {
+    work();
+    device.finish();
+    for (auto _ : state) {
+        work();
+        device.finish();
+    }
+}
+
+// Registers a benchmark timed in real milliseconds.
+void add_benchmark(const std::string& name, std::function<void(benchmark::State&)> fn);
+
+}  // namespace puddle::bench

@@ -1,0 +1,123 @@
+#include "bench/bench_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "bench/bench_engine.hpp"
+#include "bench/camera_benchmarks.hpp"
+#include "bench/look_benchmarks.hpp"
+#include "bench/shader_cost.hpp"
+#include "gpu/shader_source.hpp"
+#include "systems/puddle_variant.hpp"
+
+namespace puddle::bench {
+
+using params::ParamId;
+using params::Params;
+
+namespace {
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    int threads = 0;
+    for (; std::getline(in, line);) {
+        if (line.starts_with("processor")) ++threads;
+        if (line.starts_with("model name") && model == "unknown CPU") model = line.substr(line.find(':') + 2);
+    }
+    return fmt::format("{} ({} threads)", model, threads);
+}
+
+// Other processes share llvmpipe's CPU cores: a loaded machine inflates every figure.
+std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    in >> one >> five >> fifteen;
+    return fmt::format("{} {} {} (1, 5, 15 min)", one, five, fifteen);
+}
+
+
+}  // namespace
+
+std::string cell(std::optional<double> ms, std::optional<double> base) {
+    if (!ms) return fmt::format("{:>20}", "-");
+    return base ? fmt::format("{:>10.2f} {:>8.2f}x", *ms, *ms / *base)
+                : fmt::format("{:>10.2f} {:>9}", *ms, "-");
+}
+
+void print_summary(const Collector& c) {
+    std::printf("\nPuddle passes, ms (x floor of the same size)\n  GL:   %s\n  CPU:  %s\n  Load: %s\n\n%-20s",
+                renderer().c_str(), cpu_model().c_str(), load_average().c_str(), "");
+    for (glm::ivec2 s : sizes) std::printf("%20s", size_name(s).c_str());
+    const std::string wave = fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>());
+    for (const std::string& key :
+         {std::string("floor"), wave, std::string("surface"), std::string("render/intersect"),
+          std::string("render/raymarch"), std::string("frame/intersect"), std::string("frame/raymarch")}) {
+        std::printf("\n%-20s", (key == wave ? key + " field" : key).c_str());
+        for (glm::ivec2 s : sizes)  // the wave step is measured once, and set against each size's floor
+            std::printf(
+                "%s", cell(c.ms(key == wave ? wave : key + "/" + size_name(s)), c.ms("floor/" + size_name(s)))
+                          .c_str());
+    }
+    for (const char* stage : {"render", "frame"}) {
+        std::printf("\n%-20s", fmt::format("{} rm/int", stage).c_str());
+        for (glm::ivec2 s : sizes) {
+            const auto rm = c.ms(fmt::format("{}/raymarch/{}", stage, size_name(s)));
+            const auto in = c.ms(fmt::format("{}/intersect/{}", stage, size_name(s)));
+            std::printf(
+                "%s", (rm && in ? fmt::format("{:>19.2f}x", *rm / *in) : fmt::format("{:>20}", "-")).c_str());
+        }
+    }
+    std::printf("\n");
+    print_look_summary(c);
+    print_camera_summary(c);
+}
+
+namespace {
+
+// The render shader's estimated per-pixel cost for one method: the variant the default parameters select
+// (systems/puddle_variant.hpp), with the default march steps.
+bench::ShaderCost shader_cost(const char* method) {
+    systems::PuddleVariant v = systems::choose_puddle_variant(Params{}, false);
+    v.raymarch = std::string(method) == "raymarch";
+    auto shader = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    if (!shader) return {};
+    return bench::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
+}
+
+}  // namespace
+
+Figures figures(const Collector& c) {
+    Figures f;
+    for (glm::ivec2 s : sizes) {
+        const auto floor = c.ms("floor/" + size_name(s));
+        for (const char* stage : {"render", "frame"})
+            for (const char* m : methods)
+                if (const auto ms = c.ms(fmt::format("{}/{}/{}", stage, m, size_name(s))); ms && floor)
+                    f[fmt::format("{}/{}/{} x floor", stage, m, size_name(s))] = *ms / *floor;
+        const auto rm = c.ms("render/raymarch/" + size_name(s)),
+                   in = c.ms("render/intersect/" + size_name(s));
+        if (rm && in) f[fmt::format("render/intersect/{} x raymarch", size_name(s))] = *in / *rm;
+    }
+    for (const char* m : methods) {
+        const bench::ShaderCost cost = shader_cost(m);
+        f[fmt::format("shader/{} texture fetches", m)] = cost.texture_fetches;
+        f[fmt::format("shader/{} alu ops", m)] = cost.alu_ops;
+    }
+    return f;
+}
+
+// Prints the shader cost, then each figure beside its baseline; true when a shader cost regressed.
+bool print_against_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
+    std::printf(
+        "\nRender shader, estimated per pixel (longest path, from the source; bench/shader_cost.hpp)\n");
+    for (const char* m : methods)
+        std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n", m,
+                    now.at(fmt::format("shader/{} texture fetches", m)),
+                    now.at(fmt::format("shader/{} alu ops", m)));
+    return check_baseline(now, baseline, path);
+}
+
+}  // namespace puddle::bench

@@ -1,0 +1,99 @@
+// The passes of a frame at each size: the floor (sample one frame-sized texture, write the frame), the
+// wave step, the surface, the puddle render by method, and the whole frame.
+#include "bench/pass_benchmarks.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+
+#include "bench/bench_engine.hpp"
+#include "systems/render_system.hpp"
+#include "systems/surface_system.hpp"
+#include "systems/wave_system.hpp"
+
+namespace puddle::bench {
+
+using params::ParamId;
+using params::Params;
+
+namespace {
+
+void set_method(Params& params, const char* method) {
+    // CommandLine is the highest source, so this always takes.
+    params.set(ParamId::render_method, std::string(method), params::ParamSource::CommandLine);
+}
+
+void bench_floor(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    gpu::Device& device = b->engine->device();
+    const gpu::FrameTarget target = b->engine->display().frame_target();
+    measure(state, device, [&] {
+        auto pass = device.begin_pass({.label = "floor", .target = target, .load = gpu::LoadOp::DontCare});
+        pass.set_pipeline(b->floor).set_texture(0, b->source, b->sampler);
+        pass.draw_fullscreen();
+    });
+}
+
+// The simulate stage (begin step, drops, wave), once. The field has its own resolution, so the display
+// size does not matter here.
+void bench_wave_step(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    app::Engine& engine = *b->engine;
+    measure(state, engine.device(), [&] { engine.run_stage(ecs::Stage::Simulate); });
+}
+
+void bench_surface(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    measure(state, device, [&] {
+        systems::surface_system(device, w.resource<systems::WaveField>(), w.resource<systems::Surface>());
+    });
+}
+
+void bench_render(benchmark::State& state, glm::ivec2 size, const char* method) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    set_method(w.resource<Params>(), method);
+    measure(state, device, [&] {
+        systems::render_system(device, w.resource<Params>(), w.resource<systems::Surface>(),
+                               w.resource<systems::Environment>(), w.resource<systems::Ground>(),
+                               w.resource<systems::PuddleRenderer>(), w.resource<systems::RenderTarget>());
+    });
+}
+
+// A whole frame at 60 Hz: exactly one wave step (at the default 60 steps/s), surface, render, present.
+void bench_frame(benchmark::State& state, glm::ivec2 size, const char* method) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    set_method(b->engine->params(), method);
+    std::string error;
+    measure(state, b->engine->device(), [&] {
+        if (auto r = b->engine->frame(1.0 / 60.0); !r) error = r.error().message;
+    });
+    if (!error.empty()) state.SkipWithError(error.c_str());
+}
+
+}  // namespace
+
+void register_pass_benchmarks() {
+    for (glm::ivec2 s : sizes) {
+        const std::string n = size_name(s);
+        add_benchmark("floor/" + n, [s](benchmark::State& st) { bench_floor(st, s); });
+        if (s == sizes[0])
+            add_benchmark(fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>()),
+                          [s](benchmark::State& st) { bench_wave_step(st, s); });
+        add_benchmark("surface/" + n, [s](benchmark::State& st) { bench_surface(st, s); });
+        for (const char* m : methods)
+            add_benchmark(fmt::format("render/{}/{}", m, n), [s, m](benchmark::State& st) { bench_render(st, s, m); });
+        for (const char* m : methods)
+            add_benchmark(fmt::format("frame/{}/{}", m, n), [s, m](benchmark::State& st) { bench_frame(st, s, m); });
+    }
+}
+
+}  // namespace puddle::bench
