@@ -21,11 +21,14 @@ double monotonic_seconds() {
 
 namespace {
 
-// A refusal or a full disk fails every save alike: one line, not one per knob turn.
-void report_save(LiveTuning& t, const Result<void>& saved) {
+// A refusal or a full disk fails every save alike: one line, not one per knob turn. What a failed save
+// did not write is still to be saved: it is tried again a delay later, and at exit.
+void report_save(LiveTuning& t, const Result<void>& saved, double now) {
     if (!saved) {
         if (saved.error().message != t.last_save_problem) spdlog::warn("{}", saved.error().message);
         t.last_save_problem = saved.error().message;
+        t.state_dirty = true;
+        t.last_knob_change = std::max(t.last_knob_change, now);
     } else {
         t.last_save_problem.clear();
         spdlog::info("state: knob values saved to {}", t.state->path());
@@ -150,6 +153,7 @@ bool reload_config(LiveTuning& t) {
 }
 
 void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
+    t.last_step = now;
     bool reload = std::exchange(t.reload_requested, false);
     if (t.watcher) {
         switch (t.watcher->poll()) {
@@ -173,7 +177,7 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
         for (const io::KnobAction& a : t.actions) apply_action(t, a, params, now);
         t.actions.clear();
     }
-    if (auto saved = t.saver ? t.saver->take() : std::nullopt) report_save(t, *saved);
+    if (auto saved = t.saver ? t.saver->take() : std::nullopt) report_save(t, *saved, now);
     if (t.state_dirty && t.state && now - t.last_knob_change >= LiveTuning::save_delay_seconds)
         start_state_save(t);
 
@@ -196,7 +200,7 @@ void start_state_save(LiveTuning& t) {
 void finish_state_save(LiveTuning& t) {
     if (!t.saver) return;
     while (t.saver->running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    if (auto saved = t.saver->take()) report_save(t, *saved);
+    if (auto saved = t.saver->take()) report_save(t, *saved, t.last_step);
 }
 
 void save_state(LiveTuning& t) {
@@ -205,7 +209,7 @@ void save_state(LiveTuning& t) {
     t.saver.reset();       // no thread touches the store any more
     if (!t.state_dirty) return;
     t.state_dirty = false;
-    report_save(t, t.state->save(t.layers.state_text()));
+    report_save(t, t.state->save(t.layers.state_text()), t.last_step);
 }
 
 void live_tuning_system(LiveTuning& tuning, params::Params& params) {

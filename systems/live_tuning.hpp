@@ -40,7 +40,8 @@ struct LiveTuning {
     std::string last_save_problem;  // logged once; the same failure is not logged again until a save works
     // Writes `state` off the frame thread; declared after it, so it is stopped before the store dies.
     std::unique_ptr<BackgroundJob<Result<void>>> saver = std::make_unique<BackgroundJob<Result<void>>>();
-    double last_knob_change = 0;
+    double last_knob_change = 0;  // a failed save counts as a change: it is tried again a delay later
+    double last_step = 0;         // the time live_tuning_step last ran
     bool layers_changed = false;
     const char* change_reason = "";  // for the log line
 };

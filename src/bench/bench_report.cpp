@@ -38,7 +38,6 @@ std::string load_average() {
     return fmt::format("{} {} {} (1, 5, 15 min)", one, five, fifteen);
 }
 
-
 }  // namespace
 
 std::string cell(std::optional<double> ms, std::optional<double> base) {

@@ -42,7 +42,6 @@ private:
     std::map<std::string, std::pair<double, int>> sums_;
 };
 
-
 // A table cell: milliseconds and, when `base` is known, the ratio to it ("  12.34   2.10x").
 std::string cell(std::optional<double> ms, std::optional<double> base);
 // The tables of passes, looks and camera frames, with the GL renderer, CPU and load average.

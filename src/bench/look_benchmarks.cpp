@@ -95,7 +95,8 @@ void bench_drop_pass(benchmark::State& state, const Look& look) {
 
 void register_look_benchmarks() {
     for (const Look& look : looks()) {
-        add_benchmark(fmt::format("look/{}", look.name), [&look](benchmark::State& st) { bench_look(st, look); });
+        add_benchmark(fmt::format("look/{}", look.name),
+                      [&look](benchmark::State& st) { bench_look(st, look); });
         if (look.sets.size() > 1 && look.sets[0].starts_with("drops."))
             add_benchmark(fmt::format("drop_pass/{}", look.name),
                           [&look](benchmark::State& st) { bench_drop_pass(st, look); });

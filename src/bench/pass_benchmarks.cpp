@@ -90,9 +90,11 @@ void register_pass_benchmarks() {
                           [s](benchmark::State& st) { bench_wave_step(st, s); });
         add_benchmark("surface/" + n, [s](benchmark::State& st) { bench_surface(st, s); });
         for (const char* m : methods)
-            add_benchmark(fmt::format("render/{}/{}", m, n), [s, m](benchmark::State& st) { bench_render(st, s, m); });
+            add_benchmark(fmt::format("render/{}/{}", m, n),
+                          [s, m](benchmark::State& st) { bench_render(st, s, m); });
         for (const char* m : methods)
-            add_benchmark(fmt::format("frame/{}/{}", m, n), [s, m](benchmark::State& st) { bench_frame(st, s, m); });
+            add_benchmark(fmt::format("frame/{}/{}", m, n),
+                          [s, m](benchmark::State& st) { bench_frame(st, s, m); });
     }
 }
 

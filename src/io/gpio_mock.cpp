@@ -189,10 +189,13 @@ void MockGpio::note_bad_line(std::string_view line, std::string_view why) {
 void MockGpio::poll(double now) {
     if (!fd_) return;
     char buffer[1024];
-    // A huge script is read over several frames, never all at once into memory.
-    while (pending_.size() < max_script_pending) {
+    // A huge script is read over several frames, never all at once into memory, and no frame reads more
+    // than max_script_pending bytes: a source that never runs dry (/dev/zero) skipping one endless line
+    // would otherwise hold the frame in read() for ever.
+    for (std::size_t read_now = 0; pending_.size() < max_script_pending && read_now < max_script_pending;) {
         const ssize_t n = ::read(fd_.get(), buffer, sizeof buffer);
         if (n <= 0) break;
+        read_now += static_cast<std::size_t>(n);
         std::string_view chunk(buffer, static_cast<std::size_t>(n));
         if (skipping_long_line_) {  // the rest of a line that was too long to be a command
             const auto nl = chunk.find('\n');

@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cerrno>
+#include <chrono>
 #include <fstream>
+#include <future>
+#include <memory>
 #include <string>
+#include <thread>
 
 #include "support/test_support.hpp"
 
@@ -77,6 +81,22 @@ TEST(GpioMock, AHugeOffsetOrAnEndlessLineIsSkippedAndTheScriptGoesOn) {
     EXPECT_TRUE((*line)->level().value()) << "the command after the long line ran";
     EXPECT_FALSE(gpio.command("gpiochip0 99999999999 1", 20.0));
     EXPECT_FALSE(gpio.command("deny gpiochip0 99999999999", 20.0));
+}
+
+// A source that never runs dry and never ends a line (/dev/zero) held the first frame in read() for ever,
+// SIGTERM included: each poll now reads at most 64 KiB. The polls run on a thread of their own, so that
+// the old code fails the test instead of hanging it (the thread and the mock are then left behind).
+TEST(GpioMock, ASourceThatNeverRunsDryHoldsNoFrame) {
+    auto* gpio = new MockGpio("/dev/zero");
+    auto done = std::make_shared<std::promise<void>>();
+    std::future<void> polled = done->get_future();
+    std::thread([gpio, done] {
+        for (int i = 0; i < 3; ++i) gpio->poll(1.0 + i);
+        done->set_value();
+    }).detach();
+    ASSERT_EQ(polled.wait_for(std::chrono::seconds(30)), std::future_status::ready)
+        << "a poll never returned";
+    delete gpio;
 }
 
 // A wait that is no sensible time (negative, NaN, a billion seconds) is skipped with a warning: "wait 1e12"

@@ -231,6 +231,44 @@ TEST(LiveTuning, ASaveThatKeepsFailingIsReportedOnce) {
     EXPECT_EQ(warnings.count(failure), 2);
 }
 
+// A knob value whose save failed (a folder in the state's place; a full disk alike) is tried again a delay
+// later without another turn, and at exit: it used to be forgotten until the next turn, so a value turned
+// once and followed by a restart was lost.
+TEST(LiveTuning, AFailedSaveIsTriedAgainUntilItIsWritten) {
+    Rig rig(knob_config);
+    std::filesystem::create_directories(rig.dir / "state.toml");
+    rig.gpio->set_level("gpiochip0", 17, true, 0);
+    rig.gpio->set_level("gpiochip0", 18, true, 0);
+    rig.step(1.0);
+    turn(*rig.gpio, 1.1, 1);
+    rig.step(2.0);
+    rig.step(2.0 + LiveTuning::save_delay_seconds);  // fails: a folder
+    finish_state_save(*rig.tuning);
+    std::filesystem::remove(rig.dir / "state.toml");
+    rig.step(3.0 + LiveTuning::save_delay_seconds);  // too soon to retry
+    finish_state_save(*rig.tuning);
+    EXPECT_FALSE(std::filesystem::exists(rig.dir / "state.toml"));
+    rig.step(6.0 + LiveTuning::save_delay_seconds);  // retried with no new turn
+    finish_state_save(*rig.tuning);
+    auto saved = params::load_config_file((rig.dir / "state.toml").string());
+    ASSERT_TRUE(saved) << saved.error().message;
+    ASSERT_EQ(saved->entries.size(), 1u);
+    EXPECT_NEAR(std::get<float>(saved->entries[0].value), 0.6f, 1e-5);
+
+    // At exit: a failed save is written by the exit stage once the way is clear.
+    std::filesystem::remove(rig.dir / "state.toml");
+    std::filesystem::create_directories(rig.dir / "state.toml");
+    turn(*rig.gpio, 20.0, 1);
+    rig.step(21.0);
+    rig.step(21.0 + LiveTuning::save_delay_seconds);
+    finish_state_save(*rig.tuning);
+    std::filesystem::remove(rig.dir / "state.toml");
+    save_state(*rig.tuning);
+    saved = params::load_config_file((rig.dir / "state.toml").string());
+    ASSERT_TRUE(saved) << saved.error().message;
+    EXPECT_NEAR(std::get<float>(saved->entries[0].value), 0.7f, 1e-5);
+}
+
 // A save stuck on the disk (an SD card taking seconds to flush, played here by a FIFO in the place of the
 // temporary file, whose open waits for a reader) holds no frame: the steps go on, the knob keeps working,
 // and the save finishes once the disk answers. Before, the frame thread wrote the file itself and waited.
