@@ -99,9 +99,11 @@ struct Parsed {
 };
 
 // Reads every key of `text`. Fails only where no key can be trusted: past the input limits, or not TOML
-// (then `syntax_error_line`, when given, is the line toml++ stopped at).
+// (then `syntax_error_line`, when given, is the line a limit was met on or toml++ stopped at).
 Result<Parsed> parse_all(std::string_view text, std::string_view path, int* syntax_error_line = nullptr) {
-    if (auto r = check_toml_limits(text, path); !r) return r.error();
+    // A limit met on some line is, for the keys before it, like a syntax error there (the saved state
+    // keeps them).
+    if (auto r = check_toml_limits(text, path, syntax_error_line); !r) return r.error();
     Parsed out;
     Config& config = out.config;
     config.path = std::string(path);

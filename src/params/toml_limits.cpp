@@ -26,6 +26,7 @@ class NestingScan {
 public:
     NestingScan(std::string_view text, std::string_view path) : s_(text), path_(path) {}
 
+    int error_line() const { return error_line_; }
     Result<void> run() {
         while (!error_) {
             skip_blank_lines_and_comments();
@@ -142,6 +143,7 @@ private:
         else if (k.bytes > toml_limits.max_key_bytes)
             error_ = make_error(ExitCode::Config, "config: {}:{}: {} is {} bytes long; the limit is {}",
                                 path_, k.line, what, k.bytes, toml_limits.max_key_bytes);
+        if (error_) error_line_ = k.line;
         return !error_;
     }
     bool enter(int depth) {
@@ -151,6 +153,7 @@ private:
                            "config: {}:{}: value nests more than {} levels (arrays or inline tables); the "
                            "limit is {}",
                            path_, line_, toml_limits.max_depth, toml_limits.max_depth);
+        if (error_) error_line_ = line_;
         return !error_;
     }
     // A value whose key sits `depth` levels deep; array elements sit one level deeper.
@@ -213,23 +216,30 @@ private:
     int line_ = 1;
     int header_depth_ = 0;
     std::optional<Error> error_;
+    int error_line_ = 0;  // the line error_ names
 };
 
 }  // namespace
 
-Result<void> check_toml_limits(std::string_view text, std::string_view path) {
+Result<void> check_toml_limits(std::string_view text, std::string_view path, int* failed_line) {
     if (text.size() > toml_limits.max_bytes)
         return make_error(ExitCode::Config, "config: {}: {} bytes; the limit is {} bytes (1 MiB)", path,
                           text.size(), toml_limits.max_bytes);
     // Nesting first: a 50 000-level key is also a long line, and its depth is what to fix.
-    if (auto r = NestingScan(text, path).run(); !r) return r;
+    NestingScan scan(text, path);
+    if (auto r = scan.run(); !r) {
+        if (failed_line) *failed_line = scan.error_line();
+        return r;
+    }
     int line = 1;
     for (std::size_t start = 0; start < text.size(); ++line) {
         std::size_t end = text.find('\n', start);
         if (end == std::string_view::npos) end = text.size();
-        if (end - start > toml_limits.max_line_bytes)
+        if (end - start > toml_limits.max_line_bytes) {
+            if (failed_line) *failed_line = line;
             return make_error(ExitCode::Config, "config: {}:{}: line is {} bytes long; the limit is {}", path,
                               line, end - start, toml_limits.max_line_bytes);
+        }
         start = end + 1;
     }
     return {};

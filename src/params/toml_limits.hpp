@@ -24,7 +24,8 @@ inline constexpr TomlLimits toml_limits{};
 // Checks `text` against the limits. The error (exit code 2) names the file, the line and the limit:
 // "config: /etc/puddle/puddle.toml:3: key nests 50001 levels; the limit is 16". Syntax errors are not
 // reported here (toml++ does that with its own words); the scan only has to bound what it can reach.
-Result<void> check_toml_limits(std::string_view text, std::string_view path);
+// `failed_line`, when given, is set to the line a limit was met on (left alone for the file's size).
+Result<void> check_toml_limits(std::string_view text, std::string_view path, int* failed_line = nullptr);
 
 // Reads a file of at most toml_limits.max_bytes without reading more than one byte past it (a FIFO or
 // /dev/zero named as a config ends too). Errors: "config: PATH: cannot open: why", "config: PATH: larger

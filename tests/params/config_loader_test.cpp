@@ -271,13 +271,16 @@ TEST(ParseConfigKeepingValid, KeepsEveryValidKeyAndReportsEachBadOneInFileOrder)
     EXPECT_EQ(
         r->dropped[2],
         "config: state.toml:8: water.turbidity = 2.5 is out of range: allowed a number from 0 to 2 1/unit");
-    // Text that is not TOML, or past the limits, has no key to keep.
+    // Text that is not TOML from line 1 has no key to keep; a line past the limits keeps the keys above it.
     EXPECT_FALSE(parse_config_keeping_valid("[rain\nintensity = 0.8\n", "state.toml"));
     std::string deep = "a";
     for (int i = 0; i < 20; ++i) deep += ".a";
     auto too_deep = parse_config_keeping_valid("[rain]\nintensity = 0.8\n" + deep + " = 1\n", "state.toml");
-    ASSERT_FALSE(too_deep);
-    EXPECT_EQ(too_deep.error().message, "config: state.toml:3: key nests 22 levels; the limit is 16");
+    ASSERT_TRUE(too_deep) << too_deep.error().message;
+    ASSERT_EQ(too_deep->config.entries.size(), 1u);
+    EXPECT_EQ(too_deep->syntax_error,
+              "config: state.toml:3: key nests 22 levels; the limit is 16; the keys from line 3 on are dropped");
+    EXPECT_FALSE(parse_config_keeping_valid(deep + " = 1\n", "state.toml")) << "past the limits from line 1";
 }
 
 TEST(ParseConfig, WrongTypeNamesFileLineAndExpectedType) {

@@ -90,6 +90,21 @@ TEST(StateStore, AFileThatStopsBeingTomlKeepsTheKeysBeforeTheBreak) {
     EXPECT_TRUE(loaded.problems[0].ends_with("the keys from line 3 on are dropped")) << loaded.problems[0];
 }
 
+// A key past the length limit on line 4 (a hand edit, a stray paste) kept none of the values before it.
+TEST(StateStore, AKeyPastTheLimitsKeepsTheValuesBeforeIt) {
+    test::TempDir dir;
+    const std::string path =
+        dir.write("state.toml", "[rain]\nintensity = 0.5\nspeed = 0.7\n" + std::string(300, 'k') + " = 1\n");
+    auto loaded = StateStore(path).load();
+    ASSERT_TRUE(loaded.state) << (loaded.problems.empty() ? "" : loaded.problems[0]);
+    EXPECT_EQ(loaded.state->entries.size(), 2u);
+    ASSERT_EQ(loaded.problems.size(), 1u);
+    EXPECT_EQ(loaded.problems[0],
+              "state: " + path +
+                  ":4: key is 300 bytes long; the limit is 256; the keys from line 4 on are "
+                  "dropped");
+}
+
 // toml++ stops at a number too big for 64 bits without naming the key; the line names it, with the
 // parameter's range, as for any other out-of-range value, and the values above it are kept.
 TEST(StateStore, ANumberTooBigForTomlIsNamedWithItsKeyAndRange) {
