@@ -142,7 +142,8 @@ bool reload_config(LiveTuning& t) {
         return false;
     }
     const bool knobs_changed = config->knobs != t.layers.config().knobs;
-    if (auto r = t.layers.set_config(std::move(*config)); !r) {
+    if (auto r = t.layers.set_presets_and_config(params::Presets::load(t.preset_folders), std::move(*config));
+        !r) {
         spdlog::error("{} (keeping the last good configuration)", r.error().message);
         return false;
     }

@@ -29,7 +29,8 @@ struct LiveTuning {
 
     explicit LiveTuning(params::ParamLayers l) : layers(std::move(l)) {}
     params::ParamLayers layers;
-    std::string config_path;  // empty: no config file, nothing to watch
+    std::string config_path;                  // empty: no config file, nothing to watch
+    std::vector<std::string> preset_folders;  // read again with every reload (Presets::load)
     std::optional<params::ConfigWatcher> watcher;
     bool reload_requested = false;  // set by SIGHUP
     std::unique_ptr<io::GpioBackend> gpio;
@@ -52,8 +53,8 @@ double monotonic_seconds();
 // Creates the knobs of the current config (on `tuning.gpio`, when there are any) and starts watching
 // the config file. Call once, before the frame loop.
 void start_live_tuning(LiveTuning& tuning);
-// Reads the config file again; an invalid file is logged (file:line and why) and the last good
-// configuration keeps running. Returns true when the new file was applied.
+// Reads the config file and the preset folders again; an invalid file is logged (file:line and why) and the
+// last good configuration keeps running. Returns true when the new file was applied.
 bool reload_config(LiveTuning& tuning);
 // One input-stage step at time `now`: config changes, knob events, the delayed state save, and the
 // recomposed `params` when a layer changed (logged as one line naming what changed).

@@ -96,6 +96,7 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     systems::LiveTuning tuning(
         params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
     tuning.config_path = path;
+    tuning.preset_folders = preset_folders;
     if (!path.empty()) {
         auto config = params::load_config_file(path);
         if (!config) return config.error();

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "util/safe_quote.hpp"
 
@@ -43,6 +44,15 @@ Result<void> ParamLayers::set_config(Config config) {
     config_ = std::move(config);
     preset_ = std::move(preset);
     preset_name_ = name;
+    return {};
+}
+
+Result<void> ParamLayers::set_presets_and_config(Presets presets, Config config) {
+    Presets kept = std::exchange(presets_, std::move(presets));
+    if (auto r = set_config(std::move(config)); !r) {
+        presets_ = std::move(kept);
+        return r;
+    }
     return {};
 }
 

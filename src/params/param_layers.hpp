@@ -23,6 +23,8 @@ public:
     // Makes `config` the config layer, with the preset it names. Validates everything first: on error
     // nothing changes (the last good config keeps running).
     Result<void> set_config(Config config);
+    // The same with the presets read again (their files may have been edited): both or neither change.
+    Result<void> set_presets_and_config(Presets presets, Config config);
     const Config& config() const { return config_; }
 
     // A preset chosen with a knob's button; it wins over the config's `preset =`. Empty: the config's.

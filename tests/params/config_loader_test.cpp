@@ -278,8 +278,9 @@ TEST(ParseConfigKeepingValid, KeepsEveryValidKeyAndReportsEachBadOneInFileOrder)
     auto too_deep = parse_config_keeping_valid("[rain]\nintensity = 0.8\n" + deep + " = 1\n", "state.toml");
     ASSERT_TRUE(too_deep) << too_deep.error().message;
     ASSERT_EQ(too_deep->config.entries.size(), 1u);
-    EXPECT_EQ(too_deep->syntax_error,
-              "config: state.toml:3: key nests 22 levels; the limit is 16; the keys from line 3 on are dropped");
+    EXPECT_EQ(
+        too_deep->syntax_error,
+        "config: state.toml:3: key nests 22 levels; the limit is 16; the keys from line 3 on are dropped");
     EXPECT_FALSE(parse_config_keeping_valid(deep + " = 1\n", "state.toml")) << "past the limits from line 1";
 }
 

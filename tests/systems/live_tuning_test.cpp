@@ -321,6 +321,29 @@ TEST(LiveTuning, AConfigReloadDoesNotUndoAKnob) {
     EXPECT_FLOAT_EQ(rig.params.get<ParamId::look_vignette>(), 0.9f);
 }
 
+// A preset file beside the config is the user's to edit too: a reload (SIGHUP, or an edited config)
+// reads the presets again. They were read once at start, so an edited preset needed a restart.
+TEST(LiveTuning, AReloadReadsAnEditedPresetAgain) {
+    Rig rig("[rain]\nintensity = 0.5\n");
+    std::filesystem::create_directories(rig.dir / "presets");
+    rig.dir.write("presets/mine.toml", "[rain]\ndrop_count = 5\n");
+    rig.tuning->preset_folders = {(rig.dir / "presets").string()};
+    rig.write_config("preset = \"mine\"\n");
+    rig.tuning->reload_requested = true;  // as SIGHUP does
+    rig.step(1.0);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 5);
+    rig.dir.write("presets/mine.toml", "[rain]\ndrop_count = 6\n");
+    rig.tuning->reload_requested = true;
+    rig.step(2.0);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 6);
+    // A preset edited into something invalid keeps the last good one running, presets and config alike.
+    rig.dir.write("presets/mine.toml", "[rain]\ndrop_count = 999\n");
+    rig.tuning->reload_requested = true;
+    rig.step(3.0);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 6);
+    EXPECT_EQ(rig.tuning->layers.preset_name(), "mine");
+}
+
 TEST(LiveTuning, AButtonStepsThroughThePresets) {
     Rig rig(knob_config);
     rig.step(1.0);
