@@ -99,6 +99,7 @@ TEST(EglContext, HasExtensionMatchesWholeWordsOfTheDisplaysList) {
             EXPECT_EQ(ctx->has_extension(part), words.count(part) == 1) << part;
     }
     EXPECT_FALSE(ctx->has_extension("EGL_PUDDLE_no_such_extension"));
+    EXPECT_FALSE(ctx->has_extension("")) << "an empty name is no extension (and ends the search)";
 }
 
 TEST(EglContext, AWorkerContextSharesObjectsBothWays) {
