@@ -42,7 +42,7 @@ void look_up(GlExtensions& table, Fn& entry, const char* function, const char* e
 }  // namespace
 
 bool has_extension(const char* list, const char* name) {
-    if (!list) return false;
+    if (!list || !*name) return false;  // an empty name would match everywhere and never advance
     const std::size_t n = std::strlen(name);
     for (const char* p = std::strstr(list, name); p; p = std::strstr(p + n, name))
         if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;

@@ -43,7 +43,8 @@ struct GlExtensions {
     static GlExtensions load();
 };
 
-// Whether the space-separated `list` (an extension string) holds `name` as a whole word; false for null.
+// Whether the space-separated `list` (an extension string) holds `name` as a whole word; false for a null
+// list or an empty name.
 bool has_extension(const char* list, const char* name);
 
 }  // namespace puddle::gpu

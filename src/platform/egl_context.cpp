@@ -256,6 +256,7 @@ bool EglContext::swap_buffers() {
 }
 
 bool EglContext::has_extension(std::string_view name) const {
+    if (name.empty()) return false;  // it would match everywhere and never advance
     std::size_t pos = 0;
     while ((pos = extensions_.find(name, pos)) != std::string::npos) {
         const std::size_t end = pos + name.size();
@@ -275,7 +276,7 @@ std::string EglContext::vendor() const {
 bool current_display_has_extension(std::string_view name) {
     const EGLDisplay display = eglGetCurrentDisplay();
     const char* list = display == EGL_NO_DISPLAY ? nullptr : eglQueryString(display, EGL_EXTENSIONS);
-    if (!list) return false;
+    if (!list || name.empty()) return false;  // an empty name would match a trailing space
     const std::string_view all(list);
     for (std::size_t at = all.find(name); at != std::string_view::npos; at = all.find(name, at + 1)) {
         const bool starts = at == 0 || all[at - 1] == ' ';

@@ -44,7 +44,7 @@ public:
     EGLConfig config() const { return config_; }
     EGLContext context() const { return context_; }
     EGLSurface surface() const { return surface_; }
-    bool has_extension(std::string_view name) const;  // display extensions
+    bool has_extension(std::string_view name) const;  // display extensions, whole words; false for ""
     // A context sharing this one's objects, for a worker thread (gpu/worker_context.hpp). Needs
     // EGL_KHR_surfaceless_context (Mesa has it on every platform); an error says what is missing. Create
     // and destroy it on this context's thread; only make_current/release run on the worker.

@@ -121,20 +121,6 @@ TEST(Engine, APluginErrorStopsCreationWithItsMessage) {
     EXPECT_EQ(engine.error().message, "sky: cannot open /x.hdr");
 }
 
-TEST(Engine, ACapturedFrameIsTheFrameReadBack) {
-    auto engine = Engine::create(params::Params{}, headless({48, 32}), {}, {systems::add_puddle_plugin});
-    ASSERT_TRUE(engine.ok()) << engine.error().message;
-    Engine& e = **engine;
-    e.capture_next_frame();
-    ASSERT_TRUE(e.frame(1.0 / 60).ok());
-    const assets::Image captured = e.take_captured();
-    ASSERT_EQ(captured.width, 48);
-    ASSERT_EQ(captured.height, 32);
-    EXPECT_EQ(captured.data, e.read_frame().data)
-        << "headless keeps the frame: the capture is the same pixels";
-    EXPECT_GT(test::luma_stddev(captured, 0, 0, 48, 32), 1.0) << "the puddle, not an empty target";
-}
-
 TEST(Engine, DebugLoggingPrintsTheScheduleOnceAtStartUp) {
     const test::CommandResult r = test::run_puddle("-b headless --size 32x18 --frames 3 --log-level debug");
     ASSERT_EQ(r.exit_code, 0) << r.output;

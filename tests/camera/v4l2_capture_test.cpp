@@ -1,4 +1,5 @@
-// The production capture code against the fake device: negotiation, buffers, pacing, faults, leaks.
+// The production capture code against the fake device: negotiation, buffers, pacing, faults, leaks. The
+// CameraSource over it (MJPEG decoding, counters) is tested in v4l2_source_test.cpp.
 #include "camera/v4l2_capture.hpp"
 
 #include <gtest/gtest.h>
@@ -6,7 +7,6 @@
 
 #include <cstring>
 
-#include "camera/camera_source.hpp"
 #include "camera/fake_v4l2_device.hpp"
 
 namespace puddle::test {
@@ -199,41 +199,6 @@ TEST(V4l2Capture, MissingDeviceNamesThePath) {
     EXPECT_EQ(c.error().message, "camera: /dev/video0: open: No such file or directory");
 }
 
-TEST(V4l2Source, DecodesMjpegFramesOfVaryingLength) {
-    FakeV4l2Device dev;
-    dev.formats = {{V4L2_PIX_FMT_MJPEG, {{64, 48}}}};
-    dev.max_buffers = 3;
-    auto src = camera::open_v4l2_source(dev, {.width = 64, .height = 48});
-    ASSERT_TRUE(src) << src.error().message;
-    const auto a = encode_jpeg(64, 48, 200, 40, 30, 95), b = encode_jpeg(64, 48, 30, 60, 220, 40);
-    ASSERT_NE(a.size(), b.size());
-    for (const auto& [jpeg, r, g, bl] : {std::tuple{a, 200, 40, 30}, std::tuple{b, 30, 60, 220}}) {
-        dev.push_frame({jpeg});
-        auto f = (*src)->poll(0.0);
-        ASSERT_TRUE(f) << f.error().message;
-        ASSERT_TRUE(f->has_value());
-        const camera::CameraImage& img = **f;
-        EXPECT_EQ(img.layout, camera::PixelLayout::Rgba);
-        EXPECT_EQ(img.width, 64);
-        EXPECT_EQ(img.stride, 64 * 4);
-        const auto* px =
-            reinterpret_cast<const std::uint8_t*>(img.data.data()) + (10 * 64 + 20) * 4;  // top half: solid
-        EXPECT_NEAR(px[0], r, 6);
-        EXPECT_NEAR(px[1], g, 6);
-        EXPECT_NEAR(px[2], bl, 6);
-    }
-    // A truncated JPEG is skipped, not fatal, and the stream goes on.
-    std::vector<std::byte> cut(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(a.size() / 3));
-    cut[2] = std::byte{0};  // and a broken marker, so libjpeg gives up
-    dev.push_frame({cut});
-    auto bad = (*src)->poll(0.0);
-    ASSERT_TRUE(bad) << "a bad frame does not end the stream";
-    EXPECT_FALSE(bad->has_value());
-    dev.push_frame({a});
-    auto good = (*src)->poll(0.0);
-    ASSERT_TRUE(good && good->has_value());
-}
-
 TEST(V4l2Capture, OddSizedNv12FramesMustHoldTheRoundedUpChroma) {
     FakeV4l2Device dev;
     dev.formats = {{V4L2_PIX_FMT_NV12, {{65, 49}}}};
@@ -347,33 +312,6 @@ TEST(V4l2Capture, ABufferWhoseQbufFailsIsGivenBackLater) {
     EXPECT_EQ(dev.queued_buffers(), 1) << "the buffer stayed with the capture";
     ASSERT_TRUE(c->poll());
     EXPECT_EQ(dev.queued_buffers(), 2) << "and went back on the next poll: the driver is not left short";
-}
-
-TEST(V4l2Source, CorruptMjpegFramesAreDroppedAndCounted) {
-    FakeV4l2Device dev;
-    dev.formats = {{V4L2_PIX_FMT_MJPEG, {{64, 48}}}};
-    dev.max_buffers = 3;
-    auto src = camera::open_v4l2_source(dev, {.width = 64, .height = 48});
-    ASSERT_TRUE(src) << src.error().message;
-    const auto whole = encode_jpeg(64, 48, 200, 40, 30);
-    dev.push_frame({whole});
-    auto a = (*src)->poll(0.0);
-    ASSERT_TRUE(a && a->has_value());
-    dev.push_frame({cut_in_scan(whole)});
-    auto b = (*src)->poll(0.1);
-    ASSERT_TRUE(b) << "a corrupt frame does not end the stream";
-    EXPECT_FALSE(b->has_value()) << "a truncated frame is not shown";
-    EXPECT_EQ((*src)->counters().dropped, 1u);
-    dev.push_frame({encode_jpeg(32, 24, 200, 40, 30)});
-    auto c = (*src)->poll(0.2);
-    ASSERT_TRUE(c);
-    EXPECT_FALSE(c->has_value()) << "a JPEG of another size than negotiated is not shown";
-    EXPECT_EQ((*src)->counters().dropped, 2u);
-    dev.push_frame({whole});
-    auto d = (*src)->poll(0.3);
-    ASSERT_TRUE(d && d->has_value());
-    EXPECT_EQ((*src)->counters().dropped, 2u);
-    EXPECT_EQ((*src)->counters().errors, 0u);
 }
 
 }  // namespace

@@ -86,6 +86,7 @@ TEST(GlExtensionNames, WholeWordsOnly) {
     EXPECT_FALSE(has_extension("GL_OES_EGL_image_external", "GL_OES_EGL_image"));
     EXPECT_FALSE(has_extension("GL_KHR_debug", "GL_KHR_debu"));
     EXPECT_FALSE(has_extension(nullptr, "GL_KHR_debug"));
+    EXPECT_FALSE(has_extension("GL_KHR_debug", "")) << "an empty name is no extension (and ends the search)";
 }
 
 }  // namespace
