@@ -50,15 +50,29 @@ std::string join(const std::vector<std::string>& items, std::size_t max) {
 void check_saved_state(Report& r, const CliOptions& o) {
     r.section("saved knob state");
     const params::StateStore store(o.state_path.empty() ? params::StateStore::default_path() : o.state_path);
+    namespace fs = std::filesystem;
     std::error_code ec;
-    if (!std::filesystem::exists(store.path(), ec)) {
-        r.absent(fmt::format("{}: none yet (knob changes will be saved there)", store.path()));
+    const fs::path path(store.path());
+    if (!fs::exists(path, ec)) {
+        // A link whose folder is missing (storage not mounted) cannot be written; one to a missing file can.
+        if (fs::is_symlink(path, ec) &&
+            !fs::is_directory(fs::absolute(path).parent_path() / fs::read_symlink(path, ec).parent_path(),
+                              ec))
+            r.fix(
+                fmt::format("{}: a link to {}, whose folder does not exist (storage not mounted?): knob "
+                            "changes cannot be saved",
+                            store.path(), fs::read_symlink(path, ec).string()));
+        else
+            r.absent(fmt::format("{}: none yet (knob changes will be saved there)", store.path()));
         return;
     }
     const auto loaded = store.load();
     for (const std::string& problem : loaded.problems) r.fix(problem);
     if (!loaded.problems.empty())
-        r.note("a start keeps the valid values and sets the original aside beside it (state.toml.bad-*)");
+        r.note(fmt::format(
+            "a start sets this file aside as {}.bad-* and keeps its valid values; where it cannot, "
+            "it leaves the file alone and saves no knob change",
+            path.filename().string()));
     if (loaded.state)
         r.ok(fmt::format("{}: {} saved value(s){}{}", store.path(), loaded.state->entries.size(),
                          loaded.state->preset ? ", preset " : "", loaded.state->preset.value_or("")));

@@ -70,7 +70,13 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
            "--fps-cap", o.fps_cap,
            "kms and window: render at most this many frames per second (fanless boards); "
            "headless: each frame is 1/N s of simulated time, rendered as fast as it can be (0: no cap)")
-        ->check(CLI::Range(0.0, 1000.0));
+        ->check(CLI::Range(0.0, 1000.0))
+        ->check(CLI::Validator(
+            [](const std::string& text) {  // CLI::Range lets "nan" through: every comparison is false
+                const double v = std::strtod(text.c_str(), nullptr);
+                return v == v ? std::string() : std::string("not a number");
+            },
+            "", "a number"));
     cli.add_flag(
         "--fixed-step", o.fixed_step,
         "Advance simulated time by 1/60 s (or 1/fps-cap) per frame on any backend, as headless runs do: "

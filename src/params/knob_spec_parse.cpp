@@ -93,6 +93,11 @@ Result<KnobSpec> parse_knob(const toml::table& table, std::string_view path, int
     if (k.kind == KnobKind::Encoder) {
         if (auto r = read_line("a", k.line); !r) return r.error();
         if (auto r = read_line("b", k.line_b); !r) return r.error();
+        // Quadrature needs two lines: one line twice never shows a turn.
+        if (k.line == k.line_b)
+            return fail(
+                line_of(*table.get("b")),
+                fmt::format("a and b are both line {}: an encoder needs two lines", safe_quote(k.line)));
     } else {
         if (auto r = read_line("line", k.line); !r) return r.error();
     }

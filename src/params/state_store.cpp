@@ -172,7 +172,7 @@ StateStore::Loaded StateStore::load() const {
     auto text = read_toml_file(path_);
     auto parsed = text ? parse_config_keeping_valid(*text, path_) : Result<PartialConfig>(text.error());
     if (!parsed) {
-        out.problems.push_back(fmt::format("{}; no saved value could be read, started from the config",
+        out.problems.push_back(fmt::format("{}; no saved value could be read (the config's values apply)",
                                            as_state_line(std::move(parsed.error().message))));
         return out;
     }

@@ -196,15 +196,16 @@ TEST(Check, NamesTheSavedValuesAStartWouldDrop) {
     EXPECT_EQ(o.exit_code, 0) << o.output;
     EXPECT_EQ(
         sections(o.output)["[saved knob state]"],
-        (std::vector<std::string>{
-            "  FIX   state: " + state +
-                ":3: unknown key 'rain.wind' (did you mean 'rain.seed'?); dropped that "
-                "value, kept the others",
-            "  FIX   state: " + state +
-                ":5: water.turbidity = 9 is out of range: allowed a number from 0 to 2 "
-                "1/unit; dropped that value, kept the others",
-            "        a start keeps the valid values and sets the original aside beside it (state.toml.bad-*)",
-            "  OK    " + state + ": 1 saved value(s)"}))
+        (std::vector<std::string>{"  FIX   state: " + state +
+                                      ":3: unknown key 'rain.wind' (did you mean 'rain.seed'?); dropped that "
+                                      "value, kept the others",
+                                  "  FIX   state: " + state +
+                                      ":5: water.turbidity = 9 is out of range: allowed a number from 0 to 2 "
+                                      "1/unit; dropped that value, kept the others",
+                                  "        a start sets this file aside as state.toml.bad-* and keeps its "
+                                  "valid values; where it cannot, "
+                                  "it leaves the file alone and saves no knob change",
+                                  "  OK    " + state + ": 1 saved value(s)"}))
         << o.output;
     EXPECT_EQ(read_file(state), text) << "--check changes nothing";
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2) << "no copy was made";

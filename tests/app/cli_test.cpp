@@ -136,6 +136,7 @@ TEST(Cli, OtherOptions) {
     EXPECT_EQ(parse_ok({"-c", "a.toml"}).config_path, "a.toml");
     EXPECT_EQ(parse_error({"--log-level", "loud"}).code, ExitCode::Config);
     EXPECT_EQ(parse_error({"--fps-cap", "5000"}).code, ExitCode::Config);
+    EXPECT_EQ(parse_error({"--fps-cap", "nan"}).code, ExitCode::Config);  // CLI::Range let it through
     EXPECT_TRUE(parse_ok({"--fixed-step"}).fixed_step);
 }
 

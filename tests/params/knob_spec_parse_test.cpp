@@ -69,6 +69,8 @@ TEST(ConfigKnobs, MistakesNameFileLineAndWhatIsExpected) {
         {"[[knob]]\nkind = \"button\"\nline = 3\n", "needs an action"},
         {"[[knob]]\nkind = \"button\"\nline = 3\naction = \"save\"\nspin = 2\n", "unknown key 'spin'"},
         {"[[knob]]\nkind = \"button\"\nline = -3\naction = \"save\"\n", "line must be"},
+        {"[[knob]]\nkind = \"encoder\"\na = 17\nb = 17\nparam = \"rain.intensity\"\n",
+         "k.toml:4: knob 1: a and b are both line 17: an encoder needs two lines"},
     };
     for (const Case& c : cases) {
         auto r = parse_config(c.text, "k.toml");

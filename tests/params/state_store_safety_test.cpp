@@ -70,7 +70,8 @@ TEST(StateStoreSafety, AFileThatCouldNotBeReadNorSetAsideIsNeverReplaced) {
         EXPECT_FALSE(loaded.state);
         ASSERT_EQ(loaded.problems.size(), 1u);
         EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + ": ")) << loaded.problems[0];
-        EXPECT_TRUE(loaded.problems[0].ends_with("; no saved value could be read, started from the config"))
+        EXPECT_TRUE(
+            loaded.problems[0].ends_with("; no saved value could be read (the config's values apply)"))
             << loaded.problems[0];
 
         const auto aside = store.set_aside();

@@ -69,7 +69,7 @@ TEST(StateStore, AFileThatIsNotTomlGivesNoStateAndOneProblemAndIsLeftInPlace) {
     ASSERT_EQ(loaded.problems.size(), 1u);
     // One line in the state's own words: no "(config: PATH...)" inside, and the line it failed at.
     EXPECT_TRUE(loaded.problems[0].starts_with("state: " + path + ":1: ")) << loaded.problems[0];
-    EXPECT_TRUE(loaded.problems[0].ends_with("; no saved value could be read, started from the config"))
+    EXPECT_TRUE(loaded.problems[0].ends_with("; no saved value could be read (the config's values apply)"))
         << loaded.problems[0];
     EXPECT_EQ(loaded.problems[0].find("config: "), std::string::npos) << loaded.problems[0];
     EXPECT_EQ(loaded.problems[0].find('\x01'), std::string::npos) << "control characters are not quoted";
