@@ -10,8 +10,8 @@
 #include "camera/camera_image.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/param_uniforms.hpp"
 #include "systems/environment_system.hpp"
-#include "systems/param_uniforms.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {

@@ -6,7 +6,7 @@
 
 #include "assets/environment_images.hpp"
 #include "assets/rgbm.hpp"
-#include "systems/banded_upload.hpp"
+#include "render/banded_upload.hpp"
 #include "systems/environment_system.hpp"
 
 namespace puddle::systems {

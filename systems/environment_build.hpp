@@ -15,7 +15,7 @@
 #include "gpu/capabilities.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "systems/equirect_to_cube.hpp"
+#include "render/equirect_to_cube.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {

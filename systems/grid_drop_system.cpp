@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "systems/param_uniforms.hpp"
+#include "render/param_uniforms.hpp"
 
 namespace puddle::systems {
 

@@ -7,8 +7,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/lazy_pipeline.hpp"
 #include "systems/frame_clock.hpp"
-#include "systems/lazy_pipeline.hpp"
 #include "systems/surface_system.hpp"
 
 namespace puddle::systems {

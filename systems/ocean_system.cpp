@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <numbers>
 
-#include "systems/param_uniforms.hpp"
-#include "systems/shader_phase.hpp"
-#include "systems/view_basis.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/shader_phase.hpp"
+#include "render/view_basis.hpp"
 
 namespace puddle::systems {
 

@@ -1,7 +1,7 @@
 #include "systems/rain_overlay_system.hpp"
 
-#include "systems/param_uniforms.hpp"
-#include "systems/shader_phase.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/shader_phase.hpp"
 
 namespace puddle::systems {
 

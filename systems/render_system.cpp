@@ -5,8 +5,8 @@
 #include <cmath>
 #include <glm/mat3x3.hpp>
 
-#include "systems/param_uniforms.hpp"
-#include "systems/view_basis.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/view_basis.hpp"
 
 namespace puddle::systems {
 

@@ -6,10 +6,10 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/lazy_pipeline.hpp"
+#include "render/puddle_variant.hpp"
 #include "systems/camera_environment.hpp"
 #include "systems/environment_system.hpp"
-#include "systems/lazy_pipeline.hpp"
-#include "systems/puddle_variant.hpp"
 #include "systems/surface_system.hpp"
 #include "util/result.hpp"
 

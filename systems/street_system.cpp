@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "systems/param_uniforms.hpp"
-#include "systems/shader_hash.hpp"
-#include "systems/shader_phase.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/shader_hash.hpp"
+#include "render/shader_phase.hpp"
 
 namespace puddle::systems {
 

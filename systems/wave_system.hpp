@@ -8,8 +8,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/param_uniforms.hpp"
 #include "systems/drop_system.hpp"
-#include "systems/param_uniforms.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {

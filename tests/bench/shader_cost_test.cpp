@@ -9,7 +9,7 @@
 
 #include "gpu/shader_source.hpp"
 #include "params/param_store.hpp"
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 namespace puddle::bench {
 namespace {

@@ -12,10 +12,10 @@
 #include "assets/image_io.hpp"
 #include "assets/rgbm.hpp"
 #include "params/config_loader.hpp"
+#include "render/equirect_to_cube.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
 #include "systems/environment_test_support.hpp"
-#include "systems/equirect_to_cube.hpp"
 #include "systems/render_test_support.hpp"
 
 namespace puddle::test {

@@ -8,7 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "gpu/device.hpp"
-#include "systems/param_uniforms.hpp"
+#include "render/param_uniforms.hpp"
 
 namespace puddle::systems {
 

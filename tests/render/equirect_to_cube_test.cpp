@@ -1,7 +1,7 @@
 // A panorama becomes a cube map (systems/equirect_to_cube.hpp) whose faces look where GL says they look, in
 // half floats or, where half-float targets are missing (forced here), RGBM-style RGBA8; converted in bands
 // of rows over many steps it gives the same texels as whole faces.
-#include "systems/equirect_to_cube.hpp"
+#include "render/equirect_to_cube.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "systems/param_uniforms.hpp"
+#include "render/param_uniforms.hpp"
 
 #include <string>
 #include <string_view>

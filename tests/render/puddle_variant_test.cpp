@@ -1,5 +1,5 @@
 // Which puddle shader variant the parameters select, and that every variant has its own slot and defines.
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 #include <gtest/gtest.h>
 

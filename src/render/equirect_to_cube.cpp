@@ -1,4 +1,4 @@
-#include "systems/equirect_to_cube.hpp"
+#include "render/equirect_to_cube.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <span>
 
-#include "systems/banded_upload.hpp"
+#include "render/banded_upload.hpp"
 
 namespace puddle::systems {
 Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFormat format, int face_size,

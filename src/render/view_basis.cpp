@@ -1,4 +1,4 @@
-#include "systems/view_basis.hpp"
+#include "render/view_basis.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>

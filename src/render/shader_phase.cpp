@@ -1,4 +1,4 @@
-#include "systems/shader_phase.hpp"
+#include "render/shader_phase.hpp"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Time for shaders (systems/shader_phase.hpp): phases, lattice shifts and repetitions stay small, exact
 // and continuous at any uptime, including past 2^31 and 2^32 cells.
-#include "systems/shader_phase.hpp"
+#include "render/shader_phase.hpp"
 
 #include <gtest/gtest.h>
 

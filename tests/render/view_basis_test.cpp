@@ -1,6 +1,6 @@
 // The camera's basis (systems/view_basis.hpp): right-handed and orthonormal, no roll, the image plane
 // scaled by tan(fov / 2), and sensible axes when looking straight up or at the eye itself.
-#include "systems/view_basis.hpp"
+#include "render/view_basis.hpp"
 
 #include <gtest/gtest.h>
 
