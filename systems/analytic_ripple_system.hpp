@@ -37,7 +37,7 @@ struct AnalyticSource {
 
 // Resource.
 struct AnalyticRipples {
-    LazyPipeline pass;
+    render::LazyPipeline pass;
     gpu::Texture sources;  // RGBA32F, texels_per_source x max_analytic_sources
     gpu::Sampler nearest;
     std::vector<glm::vec4> texels =

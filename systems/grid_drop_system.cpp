@@ -43,7 +43,7 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
                                    .target = {&surface.texture, {surface.resolution, surface.resolution}},
                                    .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(grid.pass.pipeline);
-    set_param_uniforms(pass, grid.pass.params, params);
+    render::set_param_uniforms(pass, grid.pass.params, params);
     pass.set("u_cell_texels", grid_cell_texels(params, surface.resolution))
         // Modulo 2^32, handed over as the bits of the shader's uint: its uint sum with the cell's own
         // cycle then wraps exactly where this count does, so no drop jumps at any uptime.

@@ -15,7 +15,7 @@ namespace puddle::systems {
 
 // Resource.
 struct GridDrops {
-    LazyPipeline pass;
+    render::LazyPipeline pass;
 };
 
 // Cell edge in field texels for the current parameters.

@@ -16,7 +16,8 @@ gpu::PipelineDesc rain_desc() {
 glm::vec4 rain_layer_falls(double seconds, double speed) {
     glm::vec4 falls{};
     for (int i = 0; i < 4; ++i)
-        falls[i] = periodic_phase(seconds, speed * rain_layer_speeds[static_cast<std::size_t>(i)], 1.0);
+        falls[i] =
+            render::periodic_phase(seconds, speed * rain_layer_speeds[static_cast<std::size_t>(i)], 1.0);
     return falls;
 }
 
@@ -31,7 +32,7 @@ void rain_overlay_system(gpu::Device& device, const params::Params& params, cons
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "rain streaks", .target = frame, .load = gpu::LoadOp::Load});
     pass.set_pipeline(rain.pass.pipeline);
-    set_param_uniforms(pass, rain.pass.params, params);
+    render::set_param_uniforms(pass, rain.pass.params, params);
     pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.get<ParamId::overlay_rain_speed>()))
         .set("u_resolution", glm::vec2(frame.size))
         .set("u_seed", params.get<ParamId::rain_seed>());

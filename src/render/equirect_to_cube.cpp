@@ -8,7 +8,7 @@
 
 #include "render/banded_upload.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFormat format, int face_size,
                                              int smallest_face_size) {
     auto make = [&](int size) {
@@ -170,4 +170,4 @@ Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& 
     }
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

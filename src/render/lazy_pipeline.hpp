@@ -10,11 +10,11 @@
 #include "gpu/device.hpp"
 #include "render/param_uniforms.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 
 struct LazyPipeline {
     gpu::Pipeline pipeline;
-    ParamBinding params;            // the parameters its shader reads (systems/param_uniforms.hpp)
+    ParamBinding params;            // the parameters its shader reads (render/param_uniforms.hpp)
     gpu::PipelineRequest building;  // a request in flight
     bool failed = false;
 
@@ -59,4 +59,4 @@ private:
     }
 };
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

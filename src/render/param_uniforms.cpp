@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <variant>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 namespace {
 
@@ -64,4 +64,4 @@ void set_param_uniforms(gpu::RenderPass& pass, const ParamBinding& binding, cons
     }
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -9,7 +9,7 @@
 
 #include "params/config_loader.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 namespace {
 
 using params::ParamId;
@@ -99,4 +99,4 @@ TEST(PuddleVariant, DescribeNamesTheChoices) {
 }
 
 }  // namespace
-}  // namespace puddle::systems
+}  // namespace puddle::render
