@@ -10,7 +10,7 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "render/lazy_pipeline.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/render_system.hpp"
 
@@ -32,7 +32,7 @@ OceanTime ocean_time(double seconds, double speed);
 
 // Resource.
 struct OceanRenderer {
-    render::LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 // Builds the pipeline now (start-up, when the config chose the ocean); otherwise the system does on first

@@ -8,7 +8,7 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "render/lazy_pipeline.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/render_system.hpp"
 
@@ -25,7 +25,7 @@ glm::vec4 rain_layer_falls(double seconds, double speed);
 
 // Resource.
 struct RainOverlay {
-    render::LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain);

@@ -23,17 +23,13 @@ gpu::PipelineDesc puddle_desc(const render::PuddleVariant& v, bool surface_unorm
 
 }  // namespace
 
-const render::LazyPipeline* PuddleRenderer::pipeline(gpu::Device& device, const render::PuddleVariant& v) {
-    const std::size_t index = render::variant_index(v);
-    render::LazyPipeline& slot = variants[index];
-    const bool was_ready = slot.ready();
-    if (!slot.request(device, [&] { return puddle_desc(v, surface_unorm); })) {
-        if (shown == render::puddle_variant_count) return nullptr;
-        return &variants[shown];  // also when `v` failed: the last good picture stays
-    }
-    if (!was_ready) spdlog::debug("render: compiled the puddle shader for {}", render::describe(v));
-    shown = index;
-    return &slot;
+const render::BuiltPipeline* PuddleRenderer::pipeline(gpu::Device& device, const render::PuddleVariant& v) {
+    const bool was_ready = variants.find(v) != nullptr;
+    const render::BuiltPipeline* p =
+        variants.request_or_last(device, v, [&] { return puddle_desc(v, surface_unorm); });
+    if (!was_ready && variants.find(v))
+        spdlog::debug("render: compiled the puddle shader for {}", render::describe(v));
+    return p;
 }
 
 Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
@@ -41,8 +37,7 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
     renderer = PuddleRenderer{};
     renderer.surface_unorm = surface.unorm;
     const render::PuddleVariant v = render::choose_puddle_variant(params, env.rgbm);
-    renderer.shown = render::variant_index(v);
-    return renderer.variants[renderer.shown].ensure(device, [&] { return puddle_desc(v, surface.unorm); });
+    return renderer.variants.ensure(device, v, [&] { return puddle_desc(v, surface.unorm); });
 }
 
 void puddle_system(gpu::Device& device, const params::Params& params, const Surface& surface,
@@ -57,7 +52,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
                    const render::PuddleVariant* variant) {
     const gpu::FrameTarget& frame = target.target;
     const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
-    const render::LazyPipeline* pipeline =
+    const render::BuiltPipeline* pipeline =
         renderer.pipeline(device, variant ? *variant : render::choose_puddle_variant(params, rgbm));
     if (!pipeline) return;
 

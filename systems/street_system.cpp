@@ -63,20 +63,21 @@ StreetTime street_time(const params::Params& params, double seconds) {
 }
 
 Result<void> prepare_street(gpu::Device& device, StreetRenderer& street) {
-    return street.pass.ensure(device, street_desc);
+    return street.pass.ensure(device, {}, street_desc);
 }
 
 bool request_street(gpu::Device& device, StreetRenderer& street) {
-    return street.pass.request(device, street_desc);
+    return street.pass.request(device, {}, street_desc) != nullptr;
 }
 
 void street_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                    StreetRenderer& street, const RenderTarget& target) {
-    if (!street.pass.request(device, street_desc)) return;
+    const render::BuiltPipeline* built = street.pass.request(device, {}, street_desc);
+    if (!built) return;
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "street", .target = frame, .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(street.pass.pipeline);
-    render::set_param_uniforms(pass, street.pass.params, params);
+    pass.set_pipeline(built->pipeline);
+    render::set_param_uniforms(pass, built->params, params);
     const StreetTime st = street_time(params, clock.sim_time);
     pass.set("u_aspect", static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1)))
         .set("u_lightning_phase", st.lightning_phase)

@@ -10,7 +10,7 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "render/lazy_pipeline.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/render_system.hpp"
 
@@ -46,7 +46,7 @@ StreetTime street_time(const params::Params& params, double seconds);
 
 // Resource.
 struct StreetRenderer {
-    render::LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 Result<void> prepare_street(gpu::Device& device, StreetRenderer& street);
