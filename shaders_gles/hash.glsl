@@ -31,7 +31,7 @@ float value_noise(vec2 p, uint salt) {
 }
 
 // value_noise(p + vec2(cells)) for a pattern scrolled by `cells` whole lattice cells plus the small p.
-// A scroll that grows with time is split that way on the CPU (systems/shader_phase.hpp): the whole
+// A scroll that grows with time is split that way on the CPU (src/render/shader_phase.hpp): the whole
 // cells are added to the lattice exactly, as the bits of the uint the hash takes (wrapping at 2^32 cells
 // like the CPU's count), so p keeps its precision however far the pattern has moved.
 float scrolled_value_noise(vec2 p, ivec2 cells, uint salt) {

@@ -4,7 +4,7 @@
 // murky water; then fog, vignette, tone mapping and sRGB encoding.
 //
 // Choices that are the same for every pixel are #defines, set by the render system from the parameters
-// (systems/puddle_variant.hpp), so no pixel pays for a branch it never takes: a GPU runs both sides of a
+// (src/render/puddle_variant.hpp), so no pixel pays for a branch it never takes: a GPU runs both sides of a
 // branch its neighbours disagree on, and llvmpipe runs both sides of every branch.
 //   METHOD_RAYMARCH: the reference's sphere-trace of the displaced box (render.march_steps reads);
 //                    otherwise meet the flat top analytically and refine once (1 read).

@@ -59,37 +59,46 @@ gpu::PipelineDesc analytic_ripples_desc(const Surface& surface) {
             .defines = defines,
             .textures = {"u_sources"}};
 }
+
+// The data texture, made once.
+Result<void> make_sources(gpu::Device& device, AnalyticRipples& ripples) {
+    if (ripples.sources) return {};
+    auto sources = device.create_texture({.label = "analytic sources",
+                                          .format = gpu::TextureFormat::RGBA32F,
+                                          .width = texels_per_source,
+                                          .height = max_analytic_sources});
+    if (!sources) return sources.error();
+    ripples.sources = std::move(sources).value();
+    ripples.nearest = device.create_sampler(
+        {.label = "analytic sources", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+    return {};
+}
 }  // namespace
 
 bool request_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples) {
-    return ripples.pass.request(device, [&] { return analytic_ripples_desc(surface); });
+    if (!ripples.pass.request(device, {}, [&] { return analytic_ripples_desc(surface); })) return false;
+    if (auto made = make_sources(device, ripples); !made) {
+        ripples.pass.fail({},
+                          made.error());  // like a shader that did not build: one line, then nothing drawn
+        return false;
+    }
+    return true;
 }
 
 Result<void> prepare_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples) {
-    auto r = ripples.pass.ensure(device, [&] { return analytic_ripples_desc(surface); });
-    if (!r) return r;
-    if (!ripples.sources) {
-        auto sources = device.create_texture({.label = "analytic sources",
-                                              .format = gpu::TextureFormat::RGBA32F,
-                                              .width = texels_per_source,
-                                              .height = max_analytic_sources});
-        if (!sources) {
-            ripples.pass.failed = true;  // like a shader that did not build: one line, then nothing drawn
-            return sources.error();
-        }
-        ripples.sources = std::move(sources).value();
-        ripples.nearest = device.create_sampler(
-            {.label = "analytic sources", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
-    }
-    return {};
+    if (auto r = ripples.pass.ensure(device, {}, [&] { return analytic_ripples_desc(surface); }); !r)
+        return r;
+    return make_sources(device, ripples);
 }
 
 void analytic_ripple_pass(gpu::Device& device, AnalyticRipples& ripples, Surface& surface) {
+    const render::BuiltPipeline* built = ripples.pass.find({});
+    if (!built) return;
     ripples.sources.upload(std::as_bytes(std::span(ripples.texels)));
     auto pass = device.begin_pass({.label = "analytic ripples",
                                    .target = {&surface.texture, {surface.resolution, surface.resolution}},
                                    .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(ripples.pass.pipeline)
+    pass.set_pipeline(built->pipeline)
         .set_texture(0, ripples.sources, ripples.nearest)
         .set("u_source_count", ripples.count);
     pass.draw_fullscreen();
@@ -97,11 +106,7 @@ void analytic_ripple_pass(gpu::Device& device, AnalyticRipples& ripples, Surface
 
 void analytic_ripple_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                             AnalyticRipples& ripples, Surface& surface) {
-    const bool failed_before = ripples.pass.failed;
-    if (auto r = prepare_analytic_ripples(device, surface, ripples); !r) {
-        if (!failed_before) spdlog::error("{}", r.error().message);  // one line, then draw nothing
-        return;
-    }
+    if (!request_analytic_ripples(device, surface, ripples)) return;  // a failure is logged once
     ripples.count = std::min(params.get<ParamId::analytic_sources>(), max_analytic_sources);
     for (int i = 0; i < ripples.count; ++i)
         set_analytic_source(

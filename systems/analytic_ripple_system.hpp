@@ -15,8 +15,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
-#include "systems/lazy_pipeline.hpp"
 #include "systems/surface_system.hpp"
 
 namespace puddle::systems {
@@ -37,7 +37,7 @@ struct AnalyticSource {
 
 // Resource.
 struct AnalyticRipples {
-    LazyPipeline pass;
+    render::SinglePipelineCache pass;
     gpu::Texture sources;  // RGBA32F, texels_per_source x max_analytic_sources
     gpu::Sampler nearest;
     std::vector<glm::vec4> texels =
@@ -55,9 +55,10 @@ double analytic_height(const AnalyticSource& s, double d);
 void set_analytic_source(AnalyticRipples& ripples, int index, const AnalyticSource& s);
 
 Result<void> prepare_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples);
-// Starts building the pipeline off the frame thread (systems/look_switch.hpp); true once ready.
+// Starts building the pipeline off the frame thread (systems/look_switch.hpp) and, once it is built,
+// makes the data texture; true once both are ready. A failure of either is logged once.
 bool request_analytic_ripples(gpu::Device& device, const Surface& surface, AnalyticRipples& ripples);
-// Uploads the first ripples.count sources and writes the surface from them.
+// Uploads the first ripples.count sources and writes the surface from them (once the pipeline is built).
 void analytic_ripple_pass(gpu::Device& device, AnalyticRipples& ripples, Surface& surface);
 
 // Render stage, before the puddle pass, while the puddle with analytic drops is the look shown.

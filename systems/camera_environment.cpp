@@ -111,7 +111,7 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
         return r;
     for (auto [pipeline, binding] : {std::pair{&env.cube_planar, &env.cube_planar_params},
                                      std::pair{&env.cube_mirror_ball, &env.cube_mirror_ball_params}}) {
-        auto bound = bind_params(*pipeline);
+        auto bound = render::bind_params(*pipeline);
         if (!bound) return bound.error();
         *binding = std::move(bound).value();
     }
@@ -256,7 +256,7 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
             .set("u_up", up)
             .set("u_aspect", aspect)
             .set("u_tan_half_fov", tan_half);
-        set_param_uniforms(pass, ball ? env.cube_mirror_ball_params : env.cube_planar_params, params);
+        render::set_param_uniforms(pass, ball ? env.cube_mirror_ball_params : env.cube_planar_params, params);
         pass.draw_fullscreen();
     }
     env.cube.generate_mipmaps();

@@ -10,8 +10,8 @@
 #include "camera/camera_image.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/param_uniforms.hpp"
 #include "systems/environment_system.hpp"
-#include "systems/param_uniforms.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {
@@ -25,8 +25,8 @@ struct CameraEnvironment {
     gpu::Texture cube;            // what the puddle reflects while the camera streams
     gpu::Sampler nearest, linear;
     gpu::Pipeline convert_yuyv, convert_nv12, convert_external, cube_planar, cube_mirror_ball;
-    ParamBinding cube_planar_params, cube_mirror_ball_params;  // environment.camera_blend
-    std::vector<gpu::ExternalImage> imported;                  // per driver buffer (zero-copy path)
+    render::ParamBinding cube_planar_params, cube_mirror_ball_params;  // environment.camera_blend
+    std::vector<gpu::ExternalImage> imported;                          // per driver buffer (zero-copy path)
     gpu::ExternalImageSupport support;
     bool zero_copy = false;  // dmabuf import available: use it for frames that carry a dmabuf
     bool built = false;      // pipelines made (on first use: most runs never need them)

@@ -6,7 +6,7 @@
 
 #include "assets/environment_images.hpp"
 #include "assets/rgbm.hpp"
-#include "systems/banded_upload.hpp"
+#include "render/banded_upload.hpp"
 #include "systems/environment_system.hpp"
 
 namespace puddle::systems {
@@ -74,8 +74,10 @@ Result<PreparedEnvironment> prepare_environment(const EnvironmentRequest& reques
     if (asked > max_size)
         spdlog::warn("environment.face_size: {} is more than this GPU's largest cube map; using {}", asked,
                      max_size);
-    out.face_size = asked > 0 ? std::min(asked, max_size) : auto_face_size(images->panorama.width, max_size);
-    out.panorama_levels = panorama_mip_chain(std::move(images->panorama), request.max_texture_size, stop);
+    out.face_size =
+        asked > 0 ? std::min(asked, max_size) : render::auto_face_size(images->panorama.width, max_size);
+    out.panorama_levels =
+        render::panorama_mip_chain(std::move(images->panorama), request.max_texture_size, stop);
     if (stop.stop_requested()) return stopped(request);
     return out;
 }
@@ -94,8 +96,8 @@ Result<bool> EnvironmentBuild::step(gpu::Device& device) {
         return done;
     }
     if (!cube_) {
-        auto made =
-            create_environment_cube(device, prepared_.format, prepared_.face_size, smallest_face_size_);
+        auto made = render::create_environment_cube(device, prepared_.format, prepared_.face_size,
+                                                    smallest_face_size_);
         if (!made) return made.error();
         cube_ = std::move(made).value();
         // It fitted only smaller: RGBM has every level made already, so the larger ones go; otherwise
@@ -113,8 +115,8 @@ Result<bool> EnvironmentBuild::step(gpu::Device& device) {
     }
     if (level_ < prepared_.cube_levels.size()) {
         assets::Image& face = prepared_.cube_levels[level_][face_];
-        if (!upload_next_band(cube_, face, static_cast<int>(level_), static_cast<int>(face_), row_,
-                              texels_per_step))
+        if (!render::upload_next_band(cube_, face, static_cast<int>(level_), static_cast<int>(face_), row_,
+                                      texels_per_step))
             return false;
         face = {};
         row_ = 0;

@@ -15,7 +15,7 @@
 #include "gpu/capabilities.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "systems/equirect_to_cube.hpp"
+#include "render/equirect_to_cube.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {
@@ -71,7 +71,7 @@ public:
 private:
     PreparedEnvironment prepared_;
     int smallest_face_size_;
-    std::optional<EquirectToCube> conversion_;
+    std::optional<render::EquirectToCube> conversion_;
     gpu::Texture cube_;
     std::size_t level_ = 0, face_ = 0;  // the next face image to upload
     int row_ = 0;                       // and its next row

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "systems/param_uniforms.hpp"
+#include "render/param_uniforms.hpp"
 
 namespace puddle::systems {
 
@@ -27,11 +27,11 @@ gpu::PipelineDesc grid_drops_desc(const Surface& surface, int reach) {
 }  // namespace
 
 Result<void> prepare_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid, int reach) {
-    return grid.pass.ensure(device, [&] { return grid_drops_desc(surface, reach); });
+    return grid.pass.ensure(device, {}, [&] { return grid_drops_desc(surface, reach); });
 }
 
 bool request_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid) {
-    return grid.pass.request(device, [&] { return grid_drops_desc(surface, 1); });
+    return grid.pass.request(device, {}, [&] { return grid_drops_desc(surface, 1); }) != nullptr;
 }
 
 void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
@@ -39,11 +39,13 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
     // Cycle count and fraction split in double: a float time would lose the fraction after weeks.
     const double cycles = now / static_cast<double>(params.get<ParamId::grid_cycle>());
     const double base = std::floor(cycles);
+    const render::BuiltPipeline* built = grid.pass.find({});
+    if (!built) return;
     auto pass = device.begin_pass({.label = "grid drops",
                                    .target = {&surface.texture, {surface.resolution, surface.resolution}},
                                    .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(grid.pass.pipeline);
-    set_param_uniforms(pass, grid.pass.params, params);
+    pass.set_pipeline(built->pipeline);
+    render::set_param_uniforms(pass, built->params, params);
     pass.set("u_cell_texels", grid_cell_texels(params, surface.resolution))
         // Modulo 2^32, handed over as the bits of the shader's uint: its uint sum with the cell's own
         // cycle then wraps exactly where this count does, so no drop jumps at any uptime.
@@ -56,11 +58,7 @@ void grid_drop_pass(gpu::Device& device, const params::Params& params, double no
 
 void grid_drop_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                       GridDrops& grid, Surface& surface) {
-    const bool failed_before = grid.pass.failed;
-    if (auto r = prepare_grid_drops(device, surface, grid); !r) {
-        if (!failed_before) spdlog::error("{}", r.error().message);  // one line, then draw nothing
-        return;
-    }
+    if (!request_grid_drops(device, surface, grid)) return;  // a failure is logged once, then nothing drawn
     grid_drop_pass(device, params, clock.sim_time, grid, surface);
 }
 

@@ -7,15 +7,15 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
-#include "systems/lazy_pipeline.hpp"
 #include "systems/surface_system.hpp"
 
 namespace puddle::systems {
 
 // Resource.
 struct GridDrops {
-    LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 // Cell edge in field texels for the current parameters.
@@ -26,7 +26,8 @@ Result<void> prepare_grid_drops(gpu::Device& device, const Surface& surface, Gri
 // Starts building the reach-1 pipeline off the frame thread (systems/look_switch.hpp); true once ready.
 bool request_grid_drops(gpu::Device& device, const Surface& surface, GridDrops& grid);
 
-// Writes the surface for simulated time `now`; only_cell >= 0 isolates one cell's drop (tests).
+// Writes the surface for simulated time `now`, once the pipeline is built; only_cell >= 0 isolates one
+// cell's drop (tests).
 void grid_drop_pass(gpu::Device& device, const params::Params& params, double now, const GridDrops& grid,
                     Surface& surface, glm::ivec2 only_cell = {-1, -1});
 

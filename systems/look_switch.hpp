@@ -1,6 +1,6 @@
 #pragma once
 // The look switch (input stage, after live tuning): when the parameters choose another scene or drop
-// model, it has that look's pipelines built off the frame thread (LazyPipeline::request) and moves
+// model, it has that look's pipelines built off the frame thread (render::PipelineCache::request) and moves
 // ShownLook to it in the first frame they are all ready. Until then the old look stays on screen and
 // the frame loop keeps its pace and the watchdog ping (issue 15: no shader compile on the frame thread).
 // A look whose pipeline fails to build is never switched to: its error is logged once and the old look

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <numbers>
 
-#include "systems/param_uniforms.hpp"
-#include "systems/shader_phase.hpp"
-#include "systems/view_basis.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/shader_phase.hpp"
+#include "render/view_basis.hpp"
 
 namespace puddle::systems {
 
@@ -22,33 +22,35 @@ OceanTime ocean_time(double seconds, double speed) {
     double frequency = 0.16;  // ocean.frag's octave 0
     for (std::size_t i = 0; i < ot.shift.size(); ++i, frequency *= 2.0) {
         const double forward = speed * frequency, backward = -0.8 * forward;
-        const LatticeShift f = lattice_shift(seconds, forward), b = lattice_shift(seconds, backward);
-        ot.shift[i] = {f.fraction, periodic_phase(seconds, forward, std::numbers::pi), b.fraction,
-                       periodic_phase(seconds, backward, std::numbers::pi)};
+        const render::LatticeShift f = render::lattice_shift(seconds, forward),
+                                   b = render::lattice_shift(seconds, backward);
+        ot.shift[i] = {f.fraction, render::periodic_phase(seconds, forward, std::numbers::pi), b.fraction,
+                       render::periodic_phase(seconds, backward, std::numbers::pi)};
         ot.cells[i] = {f.cells, b.cells};
     }
     return ot;
 }
 
 Result<void> prepare_ocean(gpu::Device& device, OceanRenderer& ocean) {
-    return ocean.pass.ensure(device, ocean_desc);
+    return ocean.pass.ensure(device, {}, ocean_desc);
 }
 
 bool request_ocean(gpu::Device& device, OceanRenderer& ocean) {
-    return ocean.pass.request(device, ocean_desc);
+    return ocean.pass.request(device, {}, ocean_desc) != nullptr;
 }
 
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                   OceanRenderer& ocean, const RenderTarget& target) {
-    if (!ocean.pass.request(device, ocean_desc)) return;
+    const render::BuiltPipeline* built = ocean.pass.request(device, {}, ocean_desc);
+    if (!built) return;
     const gpu::FrameTarget& frame = target.target;
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const ViewBasis cam =
-        view_basis(params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
-                   params.get<ParamId::camera_fov>(), aspect);
+    const render::ViewBasis cam = render::view_basis(params.get<ParamId::ocean_camera_position>(),
+                                                     params.get<ParamId::ocean_camera_target>(),
+                                                     params.get<ParamId::camera_fov>(), aspect);
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(ocean.pass.pipeline);
-    set_param_uniforms(pass, ocean.pass.params, params);
+    pass.set_pipeline(built->pipeline);
+    render::set_param_uniforms(pass, built->params, params);
     const OceanTime ot = ocean_time(clock.sim_time, params.get<ParamId::ocean_speed>());
     pass.set("u_octave_shift", std::span<const glm::vec4>(ot.shift))
         .set("u_octave_cells", std::span<const glm::ivec2>(ot.cells))

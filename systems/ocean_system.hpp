@@ -2,7 +2,7 @@
 // The open-water scene (REFERENCE.md section 2), drawn when scene.kind = ocean: one fullscreen pass
 // that marches the choppy fBm height field (ocean.frag). Needs no simulation: the sea is a function of time.
 //
-// Time reaches the shader only as offsets computed here in double (systems/shader_phase.hpp). Octave i
+// Time reaches the shader only as offsets computed here in double (render/shader_phase.hpp). Octave i
 // (frequency f = 0.16 * 2^i cells per unit) has two terms travelling at t = ocean.speed * seconds and
 // -0.8 t; each moves its noise and its sines by t * f. The noise's move is sent as whole lattice cells
 // and a fraction, the sines' modulo pi (|sin| and |cos| repeat every pi): the sea never jumps, and its
@@ -10,8 +10,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
-#include "systems/lazy_pipeline.hpp"
 #include "systems/render_system.hpp"
 
 namespace puddle::systems {
@@ -32,7 +32,7 @@ OceanTime ocean_time(double seconds, double speed);
 
 // Resource.
 struct OceanRenderer {
-    LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 // Builds the pipeline now (start-up, when the config chose the ocean); otherwise the system does on first

@@ -6,42 +6,64 @@ namespace puddle::systems {
 
 namespace {
 
-Result<void> build_pipelines(gpu::Device& device, OutputCanvas& r) {
-    auto exact = device.create_pipeline(
-        {.label = "rotate", .fragment = "output_canvas.frag", .textures = {"u_canvas"}});
-    if (!exact) return exact.error();
-    auto upscale = device.create_pipeline({.label = "upscale",
-                                           .fragment = "output_canvas.frag",
-                                           .defines = {"SCALED"},
-                                           .textures = {"u_canvas"}});
-    if (!upscale) return upscale.error();
-    r.pipeline = std::move(*exact);
-    r.upscale = std::move(*upscale);
-    r.sampler =
-        device.create_sampler({.label = "canvas", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
-    r.smooth = device.create_sampler({.label = "canvas (scaled)"});
-    return {};
+CanvasPass canvas_pass(bool scaled) {
+    return scaled ? CanvasPass::turn_and_scale : CanvasPass::turn;
+}
+
+gpu::PipelineDesc canvas_desc(CanvasPass pass) {
+    if (pass == CanvasPass::turn)
+        return {.label = "rotate", .fragment = "output_canvas.frag", .textures = {"u_canvas"}};
+    return {.label = "upscale",
+            .fragment = "output_canvas.frag",
+            .defines = {"SCALED"},
+            .textures = {"u_canvas"}};
+}
+
+// The canvas for these parameters on a screen of `display_size`.
+struct CanvasLayout {
+    int degrees = 0;
+    glm::ivec2 size{0, 0};
+    bool scaled = false;
+    bool needed() const { return degrees != 0 || scaled; }
+};
+
+CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size) {
+    CanvasLayout l;
+    l.degrees = 90 * static_cast<int>(params.get<params::ParamId::display_rotation>());
+    const glm::ivec2 turned = l.degrees % 180 ? glm::ivec2(display_size.y, display_size.x) : display_size;
+    const float scale = params.get<params::ParamId::render_scale>();
+    l.size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
+    l.scaled = l.size != turned;
+    return l;
 }
 
 }  // namespace
 
+Result<void> prepare_output_canvas(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
+                                   glm::ivec2 display_size) {
+    const CanvasLayout l = canvas_layout(params, display_size);
+    if (!l.needed()) return {};
+    const CanvasPass pass = canvas_pass(l.scaled);
+    return canvas.pipelines.ensure(device, pass, [&] { return canvas_desc(pass); });
+}
+
 gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& r,
                                     gpu::FrameTarget display) {
     r.display = display;
-    const int degrees = 90 * static_cast<int>(params.get<params::ParamId::display_rotation>());
-    const float scale = params.get<params::ParamId::render_scale>();
+    const CanvasLayout l = canvas_layout(params, display.size);
+    const int degrees = l.degrees;
+    const glm::ivec2 size = l.size;
     r.quarter_turns = degrees / 90;
-    const glm::ivec2 turned = r.quarter_turns % 2 ? glm::ivec2(display.size.y, display.size.x) : display.size;
-    const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
-    r.scaled = size != turned;
-    if (r.quarter_turns == 0 && !r.scaled) return display;
-    if (!r.unavailable && r.pipeline.id() == 0) {
-        if (auto built = build_pipelines(device, r); !built) {
-            spdlog::error("{} (showing the picture unturned, at full size)", built.error().message);
-            r.unavailable = true;  // a shader that failed once fails every frame: no error 60 times a second
-        }
+    r.scaled = l.scaled;
+    if (!l.needed()) return display;
+    const CanvasPass pass = canvas_pass(r.scaled);
+    const bool ready = r.pipelines.request(device, pass, [&] { return canvas_desc(pass); }) != nullptr;
+    if (ready && r.sampler.id() == 0) {
+        r.sampler = device.create_sampler(
+            {.label = "canvas", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+        r.smooth = device.create_sampler({.label = "canvas (scaled)"});
     }
-    if (!r.unavailable && size != r.canvas_size && size != r.failed_size) {
+    if (ready && size != r.canvas_size && size != r.failed_size) {
         auto canvas = device.create_texture({.label = "canvas",
                                              .format = gpu::TextureFormat::RGBA8,
                                              .width = size.x,
@@ -59,7 +81,7 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
             r.failed_size = size;
         }
     }
-    if (r.unavailable || size == r.failed_size) {
+    if (!ready || size == r.failed_size) {
         r.quarter_turns = 0;
         r.scaled = false;
         return display;
@@ -69,14 +91,15 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
 
 void output_canvas_system(gpu::Device& device, const OutputCanvas& r) {
     if (r.quarter_turns == 0 && !r.scaled) return;
+    const render::BuiltPipeline* built = r.pipelines.find(canvas_pass(r.scaled));
+    if (!built) return;  // begin_canvas_frame rendered the scene to the display then
     auto pass = device.begin_pass(
         {.label = r.scaled ? "upscale" : "rotate", .target = r.display, .load = gpu::LoadOp::DontCare});
+    pass.set_pipeline(built->pipeline);
     if (r.scaled)
-        pass.set_pipeline(r.upscale)
-            .set_texture(0, r.canvas, r.smooth)
-            .set("u_screen_size", glm::vec2(r.display.size));
+        pass.set_texture(0, r.canvas, r.smooth).set("u_screen_size", glm::vec2(r.display.size));
     else
-        pass.set_pipeline(r.pipeline).set_texture(0, r.canvas, r.sampler);
+        pass.set_texture(0, r.canvas, r.sampler);
     pass.set("u_quarter_turns", r.quarter_turns);
     pass.draw_fullscreen();
 }

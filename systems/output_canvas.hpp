@@ -8,8 +8,15 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
 
 namespace puddle::systems {
+
+// The last pass's two shaders: exact quarter turns (one texel per screen pixel), or turned and scaled up
+// with filtering.
+enum class CanvasPass { turn, turn_and_scale };
+inline constexpr std::size_t canvas_pass_count = 2;
+using CanvasPipelines = render::PipelineCache<CanvasPass, canvas_pass_count, render::enum_index<CanvasPass>>;
 
 // Resource.
 struct OutputCanvas {
@@ -17,18 +24,22 @@ struct OutputCanvas {
     bool scaled = false;  // the canvas is smaller than the (turned) screen
     gpu::Texture canvas;
     glm::ivec2 canvas_size{0, 0};
-    gpu::Pipeline pipeline;    // exact quarter turns: one texel per screen pixel
-    gpu::Pipeline upscale;     // turns and scales up, filtering
+    // Each built the first time it is needed; one that fails is said once, then the picture stays unturned.
+    CanvasPipelines pipelines{"showing the picture unturned, at full size"};
     gpu::Sampler sampler;      // nearest
     gpu::Sampler smooth;       // bilinear
     gpu::FrameTarget display;  // this frame's display target
-    bool unavailable = false;  // its shaders failed to build: said once, then the picture stays as rendered
-    glm::ivec2 failed_size{0,
-                           0};  // a canvas the GPU could not make: said once, unturned until the size changes
+    // A canvas the GPU could not make: said once, unturned until the size changes.
+    glm::ivec2 failed_size{0, 0};
 };
 
+// Start-up: builds the shader the configured rotation and scale need on a screen of `display_size`, so the
+// first frame is turned; an error (the shader does not build) stops start-up.
+Result<void> prepare_output_canvas(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
+                                   glm::ivec2 display_size);
 // Called before each frame: remembers the display target and returns where the scene should render
 // (the display, or the canvas, made or resized as the rotation, the scale and the display size need).
+// The canvas's shader is built off the frame thread; until it is ready the scene renders to the display.
 gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
                                     gpu::FrameTarget display);
 // Present stage, before the frame is shown: turns and scales the canvas onto the display (nothing

@@ -27,13 +27,47 @@ using params::Params;
 
 namespace {
 
-// Both or neither: a surface that fails to build keeps the old field too (their sizes must match).
+// The compiled passes of `from` (the step, its parameters, sampler and drop buffer; the surface pass)
+// handed to `to`, so that build_wave_field and build_surface keep them instead of compiling again.
+void hand_over_passes(WaveField& from, WaveField& to) {
+    to.fixed_point = from.fixed_point;
+    to.step = std::move(from.step);
+    to.step_params = std::move(from.step_params);
+    to.nearest = std::move(from.nearest);
+    to.drops = std::move(from.drops);
+}
+void hand_over_passes(Surface& from, Surface& to) {
+    to.unorm = from.unorm;
+    to.field_fixed_point = from.field_fixed_point;
+    to.pipeline = std::move(from.pipeline);
+}
+
+bool wants_fixed_point(const gpu::Device& device, const Params& params) {
+    return !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
+}
+
+// Both or neither: a surface that fails to build keeps the old field too (their sizes must match). When
+// the field's format stays, the compiled passes go with the new field and surface and come back on a
+// failure, so a new resolution compiles nothing (fresh ones compiled both shaders again on the frame
+// thread at every live edit).
 Result<void> build_field_and_surface(gpu::Device& device, const Params& params, WaveField& field,
                                      Surface& surface) {
     WaveField new_field;
     Surface new_surface;
-    if (auto r = build_wave_field(device, params, new_field); !r) return r;
-    if (auto r = build_surface(device, new_field, new_surface); !r) return r;
+    const bool same_format = field.step.id() != 0 && field.fixed_point == wants_fixed_point(device, params);
+    if (same_format) {
+        hand_over_passes(field, new_field);
+        hand_over_passes(surface, new_surface);
+    }
+    auto built = build_wave_field(device, params, new_field);  // leaves new_field as it was on an error
+    if (built) built = build_surface(device, new_field, new_surface);  // and new_surface
+    if (!built) {
+        if (same_format) {
+            hand_over_passes(new_field, field);
+            hand_over_passes(new_surface, surface);
+        }
+        return built;
+    }
     field = std::move(new_field);
     surface = std::move(new_surface);
     spdlog::info("wave: {}x{} field, {} ({} steps/s)", field.resolution, field.resolution,
@@ -45,7 +79,7 @@ Result<void> build_field_and_surface(gpu::Device& device, const Params& params, 
 // Input stage: a new resolution or field format needs new textures; the old field is dropped. One that
 // cannot be made (too big for GPU memory) logs one line and keeps the old field, until the values change.
 void wave_rebuild_system(gpu::Device& device, const Params& params, WaveField& field, Surface& surface) {
-    const bool want_fixed = !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
+    const bool want_fixed = wants_fixed_point(device, params);
     const WaveField::Request wanted{params.get<ParamId::wave_resolution>(), want_fixed};
     if (field.resolution == wanted.resolution && field.fixed_point == want_fixed) {
         field.requested = {};  // back to what is shown: a later edit to the failed values tries again

@@ -4,12 +4,12 @@
 //
 // A layer's streaks fall at its own speed times overlay.rain_speed, in cells per second, and the fall
 // repeats every cell: the shader gets each layer's fall modulo 1, computed here in double
-// (systems/shader_phase.hpp), so the rain is continuous at any uptime.
+// (render/shader_phase.hpp), so the rain is continuous at any uptime.
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
-#include "systems/lazy_pipeline.hpp"
 #include "systems/render_system.hpp"
 
 namespace puddle::systems {
@@ -25,7 +25,7 @@ glm::vec4 rain_layer_falls(double seconds, double speed);
 
 // Resource.
 struct RainOverlay {
-    LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain);

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <glm/mat3x3.hpp>
 
-#include "systems/param_uniforms.hpp"
-#include "systems/view_basis.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/view_basis.hpp"
 
 namespace puddle::systems {
 
@@ -14,35 +14,30 @@ using params::ParamId;
 
 namespace {
 
-gpu::PipelineDesc puddle_desc(const PuddleVariant& v, bool surface_unorm) {
+gpu::PipelineDesc puddle_desc(const render::PuddleVariant& v, bool surface_unorm) {
     return {.label = "puddle",
             .fragment = "puddle.frag",
-            .defines = variant_defines(v, surface_unorm),
+            .defines = render::variant_defines(v, surface_unorm),
             .textures = {"u_surface", "u_env", "u_ground"}};
 }
 
 }  // namespace
 
-const LazyPipeline* PuddleRenderer::pipeline(gpu::Device& device, const PuddleVariant& v) {
-    const std::size_t index = variant_index(v);
-    LazyPipeline& slot = variants[index];
-    const bool was_ready = slot.ready();
-    if (!slot.request(device, [&] { return puddle_desc(v, surface_unorm); })) {
-        if (shown == puddle_variant_count) return nullptr;
-        return &variants[shown];  // also when `v` failed: the last good picture stays
-    }
-    if (!was_ready) spdlog::debug("render: compiled the puddle shader for {}", describe(v));
-    shown = index;
-    return &slot;
+const render::BuiltPipeline* PuddleRenderer::pipeline(gpu::Device& device, const render::PuddleVariant& v) {
+    const bool was_ready = variants.find(v) != nullptr;
+    const render::BuiltPipeline* p =
+        variants.request_or_last(device, v, [&] { return puddle_desc(v, surface_unorm); });
+    if (!was_ready && variants.find(v))
+        spdlog::debug("render: compiled the puddle shader for {}", render::describe(v));
+    return p;
 }
 
 Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
                                    const params::Params& params, PuddleRenderer& renderer) {
     renderer = PuddleRenderer{};
     renderer.surface_unorm = surface.unorm;
-    const PuddleVariant v = choose_puddle_variant(params, env.rgbm);
-    renderer.shown = variant_index(v);
-    return renderer.variants[renderer.shown].ensure(device, [&] { return puddle_desc(v, surface.unorm); });
+    const render::PuddleVariant v = render::choose_puddle_variant(params, env.rgbm);
+    return renderer.variants.ensure(device, v, [&] { return puddle_desc(v, surface.unorm); });
 }
 
 void puddle_system(gpu::Device& device, const params::Params& params, const Surface& surface,
@@ -54,18 +49,18 @@ void puddle_system(gpu::Device& device, const params::Params& params, const Surf
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
                    const Environment& env, const Ground& ground, PuddleRenderer& renderer,
                    const RenderTarget& target, const gpu::Texture* environment_override,
-                   const PuddleVariant* variant) {
+                   const render::PuddleVariant* variant) {
     const gpu::FrameTarget& frame = target.target;
     const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
-    const LazyPipeline* pipeline =
-        renderer.pipeline(device, variant ? *variant : choose_puddle_variant(params, rgbm));
+    const render::BuiltPipeline* pipeline =
+        renderer.pipeline(device, variant ? *variant : render::choose_puddle_variant(params, rgbm));
     if (!pipeline) return;
 
     // Everything uniform across the screen is worked out here once, not per pixel.
     const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const ViewBasis cam =
-        view_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
-                   params.get<ParamId::camera_fov>(), aspect);
+    const render::ViewBasis cam =
+        render::view_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
+                           params.get<ParamId::camera_fov>(), aspect);
     const float a = params.get<ParamId::environment_rotation>();
     // Column-major rotation about +Y.
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
@@ -75,7 +70,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set_texture(0, surface.texture, surface.sampler)
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
-    set_param_uniforms(pass, pipeline->params, params);
+    render::set_param_uniforms(pass, pipeline->params, params);
     pass.set("u_cam_forward", cam.forward)
         .set("u_cam_right", cam.right)
         .set("u_cam_up", cam.up)

@@ -2,14 +2,12 @@
 // The puddle render pass: draws the scene for the camera into the frame target (REFERENCE.md §1).
 // environment_override: a cube sampled in place of env.cube (the camera environment while it streams).
 
-#include <array>
-
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
+#include "render/puddle_variant.hpp"
 #include "systems/camera_environment.hpp"
 #include "systems/environment_system.hpp"
-#include "systems/lazy_pipeline.hpp"
-#include "systems/puddle_variant.hpp"
 #include "systems/surface_system.hpp"
 #include "util/result.hpp"
 
@@ -20,17 +18,19 @@ struct RenderTarget {
     gpu::FrameTarget target;
 };
 
-// Resource: the puddle shader's variants (systems/puddle_variant.hpp), each compiled on first use and
+using PuddlePipelines =
+    render::PipelineCache<render::PuddleVariant, render::puddle_variant_count, render::variant_index>;
+
+// Resource: the puddle shader's variants (render/puddle_variant.hpp), each compiled on first use and
 // kept, so a knob that flips between two looks compiles each once.
 struct PuddleRenderer {
-    std::array<LazyPipeline, puddle_variant_count> variants;
+    PuddlePipelines variants;
     bool surface_unorm = false;
-    std::size_t shown = puddle_variant_count;  // the variant drawn last: kept while a new one builds
 
     // The pipeline for `v` once built; until then (a build off the frame thread) the variant drawn last,
     // so a knob that needs a new variant switches the picture in one frame when it is ready, and the
     // variant drawn last also when `v` fails to build (logged once). Null when none was ever ready.
-    const LazyPipeline* pipeline(gpu::Device& device, const PuddleVariant& v);
+    const render::BuiltPipeline* pipeline(gpu::Device& device, const render::PuddleVariant& v);
 };
 
 // Compiles the variant these parameters select, so a shader that does not build stops start-up.
@@ -46,6 +46,6 @@ void puddle_system(gpu::Device& device, const params::Params& params, const Surf
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
                    const Environment& env, const Ground& ground, PuddleRenderer& renderer,
                    const RenderTarget& target, const gpu::Texture* environment_override = nullptr,
-                   const PuddleVariant* variant = nullptr);
+                   const render::PuddleVariant* variant = nullptr);
 
 }  // namespace puddle::systems

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "systems/param_uniforms.hpp"
-#include "systems/shader_hash.hpp"
-#include "systems/shader_phase.hpp"
+#include "render/param_uniforms.hpp"
+#include "render/shader_hash.hpp"
+#include "render/shader_phase.hpp"
 
 namespace puddle::systems {
 
@@ -22,10 +22,10 @@ gpu::PipelineDesc street_desc() {
 void set_sources(const StreetSourceKind& kind, std::uint32_t seed, double seconds,
                  std::array<float, street_max_sources>& ages, std::array<int, street_max_sources>& repeats) {
     for (std::uint32_t i = 0; i < street_max_sources; ++i) {
-        const double u = shader_unit_float(shader_hash3(i, kind.salt, seed));
+        const double u = render::shader_unit_float(render::shader_hash3(i, kind.salt, seed));
         const double period = kind.min_period + (kind.max_period - kind.min_period) * u;
-        const double offset = shader_unit_float(shader_hash3(i, kind.salt + 1u, seed));
-        const Repetition r = repetition_at(seconds, period, offset);
+        const double offset = render::shader_unit_float(render::shader_hash3(i, kind.salt + 1u, seed));
+        const render::Repetition r = render::repetition_at(seconds, period, offset);
         ages[i] = r.age;
         repeats[i] = static_cast<int>(r.index);  // the shader takes the bits back as a uint
     }
@@ -36,14 +36,14 @@ StreetTime street_time(const params::Params& params, double seconds) {
     constexpr double two_pi = 2.0 * std::numbers::pi;
     StreetTime st;
     // sin(1.7 t + 3) * sin(2.3 t): the constant 3 rides in the phase, reduced with it.
-    st.lightning_phase = {periodic_phase(seconds + 3.0 / 1.7, 1.7, two_pi),
-                          periodic_phase(seconds, 2.3, two_pi)};
+    st.lightning_phase = {render::periodic_phase(seconds + 3.0 / 1.7, 1.7, two_pi),
+                          render::periodic_phase(seconds, 2.3, two_pi)};
     // The clouds drift street.cloud_drift screens per second; the fbm's octave i samples 3 * 2.03^i
     // cells per screen.
     const double cloud_drift = params.get<ParamId::street_cloud_drift>();
     double cells_per_screen = 3.0;
     for (std::size_t i = 0; i < st.cloud_shift.size(); ++i, cells_per_screen *= 2.03) {
-        const LatticeShift shift = lattice_shift(seconds, cloud_drift * cells_per_screen);
+        const render::LatticeShift shift = render::lattice_shift(seconds, cloud_drift * cells_per_screen);
         st.cloud_shift[i] = shift.fraction;
         st.cloud_cells[i] = shift.cells;
     }
@@ -51,8 +51,8 @@ StreetTime street_time(const params::Params& params, double seconds) {
     const double drift = params.get<ParamId::street_ground_drift>();
     constexpr std::array<double, 3> ground_cells_per_unit{4.0, 8.0, 40.0};
     for (int i = 0; i < 3; ++i) {
-        const LatticeShift shift =
-            lattice_shift(seconds, ground_cells_per_unit[static_cast<std::size_t>(i)] * drift);
+        const render::LatticeShift shift =
+            render::lattice_shift(seconds, ground_cells_per_unit[static_cast<std::size_t>(i)] * drift);
         st.ground_shift[i] = shift.fraction;
         st.ground_cells[static_cast<std::size_t>(i)] = shift.cells;
     }
@@ -63,20 +63,21 @@ StreetTime street_time(const params::Params& params, double seconds) {
 }
 
 Result<void> prepare_street(gpu::Device& device, StreetRenderer& street) {
-    return street.pass.ensure(device, street_desc);
+    return street.pass.ensure(device, {}, street_desc);
 }
 
 bool request_street(gpu::Device& device, StreetRenderer& street) {
-    return street.pass.request(device, street_desc);
+    return street.pass.request(device, {}, street_desc) != nullptr;
 }
 
 void street_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                    StreetRenderer& street, const RenderTarget& target) {
-    if (!street.pass.request(device, street_desc)) return;
+    const render::BuiltPipeline* built = street.pass.request(device, {}, street_desc);
+    if (!built) return;
     const gpu::FrameTarget& frame = target.target;
     auto pass = device.begin_pass({.label = "street", .target = frame, .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(street.pass.pipeline);
-    set_param_uniforms(pass, street.pass.params, params);
+    pass.set_pipeline(built->pipeline);
+    render::set_param_uniforms(pass, built->params, params);
     const StreetTime st = street_time(params, clock.sim_time);
     pass.set("u_aspect", static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1)))
         .set("u_lightning_phase", st.lightning_phase)

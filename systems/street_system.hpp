@@ -2,7 +2,7 @@
 // The rainy-street scene (REFERENCE.md section 3), drawn when scene.kind = street: one fullscreen pass in
 // screen space (street.frag). Its rain streaks are the rain overlay, which any scene can have.
 //
-// Time reaches the shader only through StreetTime, computed here in double (systems/shader_phase.hpp),
+// Time reaches the shader only through StreetTime, computed here in double (render/shader_phase.hpp),
 // each term modulo the period it repeats at, so the street never jumps and its floats stay small:
 // lightning's two sines modulo 2 pi; the clouds' and the ground's drift as whole noise lattice cells and
 // a fraction; and each ripple and splash source, which repeats at its own period (seeded between 2.5 and
@@ -10,8 +10,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/frame_clock.hpp"
-#include "systems/lazy_pipeline.hpp"
 #include "systems/render_system.hpp"
 
 namespace puddle::systems {
@@ -46,7 +46,7 @@ StreetTime street_time(const params::Params& params, double seconds);
 
 // Resource.
 struct StreetRenderer {
-    LazyPipeline pass;
+    render::SinglePipelineCache pass;
 };
 
 Result<void> prepare_street(gpu::Device& device, StreetRenderer& street);

@@ -30,7 +30,7 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
                                                 .textures = {"u_field"},
                                                 .uniform_blocks = {"Drops"}});
         if (!pipeline) return pipeline.error();
-        auto binding = bind_params(*pipeline);
+        auto binding = render::bind_params(*pipeline);
         if (!binding) return binding.error();
         f.step = std::move(pipeline).value();
         f.step_params = std::move(binding).value();
@@ -76,7 +76,7 @@ void wave_system(gpu::Device& device, const params::Params& params, const LiveDr
         .set_texture(0, field.newest(), field.nearest)
         .set_uniform_buffer(0, field.drops)
         .set("u_drop_count", drops.count);
-    set_param_uniforms(pass, field.step_params, params);
+    render::set_param_uniforms(pass, field.step_params, params);
     pass.draw_fullscreen();
     field.current = static_cast<int>(next);
 }

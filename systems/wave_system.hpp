@@ -8,8 +8,8 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
+#include "render/param_uniforms.hpp"
 #include "systems/drop_system.hpp"
-#include "systems/param_uniforms.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {
@@ -23,7 +23,7 @@ struct WaveField {
     int resolution = 0;
     bool fixed_point = false;
     gpu::Pipeline step;
-    ParamBinding step_params;  // wave.damping
+    render::ParamBinding step_params;  // wave.damping
     gpu::Sampler nearest;
     gpu::Buffer drops;  // std140 vec4[max_drops]
     // A field that could not be made: not retried every frame, only once the parameters change again.

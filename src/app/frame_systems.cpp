@@ -31,7 +31,12 @@ void present_system(platform::Display& display, PresentStatus& status) {
 Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule) {
     world.insert_resource<ecs::FrameTime>();
     world.insert_resource<systems::RenderTarget>();
-    world.insert_resource<systems::OutputCanvas>();
+    auto& canvas = world.insert_resource<systems::OutputCanvas>();
+    if (auto r =
+            systems::prepare_output_canvas(world.resource<gpu::Device>(), world.resource<params::Params>(),
+                                           canvas, world.resource<platform::Display>().frame_target().size);
+        !r)
+        return r;
     world.insert_resource<FrameCapture>();
     world.insert_resource<PresentStatus>();
     using ecs::Stage;

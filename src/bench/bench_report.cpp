@@ -10,7 +10,7 @@
 #include "bench/look_benchmarks.hpp"
 #include "bench/shader_cost.hpp"
 #include "gpu/shader_source.hpp"
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 namespace puddle::bench {
 
@@ -77,11 +77,11 @@ void print_summary(const Collector& c) {
 namespace {
 
 // The render shader's estimated per-pixel cost for one method: the variant the default parameters select
-// (systems/puddle_variant.hpp), with the default march steps.
+// (render/puddle_variant.hpp), with the default march steps.
 bench::ShaderCost shader_cost(const char* method) {
-    systems::PuddleVariant v = systems::choose_puddle_variant(Params{}, false);
+    render::PuddleVariant v = render::choose_puddle_variant(Params{}, false);
     v.raymarch = std::string(method) == "raymarch";
-    auto shader = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    auto shader = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
     if (!shader) return {};
     return bench::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
 }

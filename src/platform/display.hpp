@@ -60,7 +60,6 @@ public:
         powered_ = on;
         return {};
     }
-    bool powered() const { return powered_; }
     // A context sharing this display's GL objects, for the pipeline compiler's worker thread
     // (gpu/worker_context.hpp); an error when the platform cannot make one (then shaders compile on the
     // frame thread, as they must without one).

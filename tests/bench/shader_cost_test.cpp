@@ -9,7 +9,7 @@
 
 #include "gpu/shader_source.hpp"
 #include "params/param_store.hpp"
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 namespace puddle::bench {
 namespace {
@@ -56,10 +56,10 @@ TEST(ShaderCost, FollowsTheVariantsDefines) {
 
 // The variant the default parameters select: checkerboard ground, no RGBM, the soft tone curve.
 TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
-    systems::PuddleVariant v = systems::choose_puddle_variant(params::Params{}, false);
-    auto intersect = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    render::PuddleVariant v = render::choose_puddle_variant(params::Params{}, false);
+    auto intersect = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
     v.raymarch = true;
-    auto raymarch = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
+    auto raymarch = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
     ASSERT_TRUE(intersect.ok() && raymarch.ok());
     const ShaderCost i = estimate_shader_cost(intersect->source, 14),
                      r = estimate_shader_cost(raymarch->source, 14);
@@ -70,14 +70,14 @@ TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
 
 // The image ground costs a fetch the checkerboard does not; a hidden ground costs neither.
 TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
-    systems::PuddleVariant v = systems::choose_puddle_variant(params::Params{}, false);
-    const auto cost = [&](systems::GroundKind g) {
+    render::PuddleVariant v = render::choose_puddle_variant(params::Params{}, false);
+    const auto cost = [&](render::GroundKind g) {
         v.ground = g;
-        auto s = gpu::assemble_shader("puddle.frag", systems::variant_defines(v, false));
+        auto s = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
         return s ? estimate_shader_cost(s->source, 14) : ShaderCost{};
     };
-    const ShaderCost checker = cost(systems::GroundKind::Checkerboard),
-                     image = cost(systems::GroundKind::Image), hidden = cost(systems::GroundKind::Hidden);
+    const ShaderCost checker = cost(render::GroundKind::Checkerboard),
+                     image = cost(render::GroundKind::Image), hidden = cost(render::GroundKind::Hidden);
     EXPECT_EQ(image.texture_fetches, checker.texture_fetches + 1);
     EXPECT_EQ(hidden.texture_fetches, checker.texture_fetches);
     EXPECT_LT(hidden.alu_ops, checker.alu_ops);

@@ -75,7 +75,7 @@ TEST_F(EnvironmentBuildTest, APanoramaKeepsItsMipChainForTheGpuToConvert) {
 TEST_F(EnvironmentBuildTest, TheFaceSizeIsAskedForOrPickedAndNeverPastTheGpu) {
     auto picked = prepare_environment(request(hdr_));
     ASSERT_TRUE(picked.ok());
-    EXPECT_EQ(picked->face_size, systems::auto_face_size(128, 2048));
+    EXPECT_EQ(picked->face_size, render::auto_face_size(128, 2048));
     EnvironmentRequest asked = request(hdr_);
     asked.face_size = 20;
     EXPECT_EQ(prepare_environment(asked)->face_size, 20);

@@ -12,10 +12,10 @@
 #include "assets/image_io.hpp"
 #include "assets/rgbm.hpp"
 #include "params/config_loader.hpp"
+#include "render/equirect_to_cube.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
 #include "systems/environment_test_support.hpp"
-#include "systems/equirect_to_cube.hpp"
 #include "systems/render_test_support.hpp"
 
 namespace puddle::test {
@@ -38,9 +38,9 @@ assets::Image render_until_reloaded(app::Engine& engine) {
 }
 
 TEST(EnvironmentSystem, FaceSizeIsAQuarterOfThePanoramaUnlessSet) {
-    EXPECT_EQ(systems::auto_face_size(1024, 16384), 256);
-    EXPECT_EQ(systems::auto_face_size(8192, 16384), 1024) << "capped: a Pi has little memory";
-    EXPECT_EQ(systems::auto_face_size(8192, 512), 512) << "never past the GPU's limit";
+    EXPECT_EQ(render::auto_face_size(1024, 16384), 256);
+    EXPECT_EQ(render::auto_face_size(8192, 16384), 1024) << "capped: a Pi has little memory";
+    EXPECT_EQ(render::auto_face_size(8192, 512), 512) << "never past the GPU's limit";
 
     TempDir dir;
     const std::string path = (dir / "sky.exr").string();

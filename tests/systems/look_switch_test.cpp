@@ -4,10 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <condition_variable>
-#include <mutex>
 
 #include "params/config_loader.hpp"
+#include "support/gated_worker_context.hpp"
 #include "support/test_support.hpp"
 #include "systems/ocean_system.hpp"
 #include "systems/render_test_support.hpp"
@@ -15,32 +14,6 @@
 
 namespace puddle::test {
 namespace {
-
-// The display's worker context, made current only once the test opens the gate: until then the compiler's
-// worker cannot link anything, as if every compile took as long as the test wants.
-class GatedContext final : public gpu::WorkerContext {
-public:
-    explicit GatedContext(std::unique_ptr<gpu::WorkerContext> inner) : inner_(std::move(inner)) {}
-    Result<void> make_current() override {
-        std::unique_lock lock(mutex_);
-        opened_.wait(lock, [this] { return open_; });
-        return inner_->make_current();
-    }
-    void release() override { inner_->release(); }
-    void open() {
-        {
-            std::lock_guard lock(mutex_);
-            open_ = true;
-        }
-        opened_.notify_all();
-    }
-
-private:
-    std::unique_ptr<gpu::WorkerContext> inner_;
-    std::mutex mutex_;
-    std::condition_variable opened_;
-    bool open_ = false;
-};
 
 void set(app::Engine& e, const std::string& assignment) {
     auto a = params::parse_assignment(assignment);
@@ -94,7 +67,8 @@ TEST(LookSwitch, ALookThatFailsToBuildIsNeverShown) {
     ASSERT_TRUE(context.ok()) << context.error().message;
     engine->device().start_background_compiles(std::move(context).value());
     // As if ocean.frag had not compiled on this GPU: the pipeline is marked failed.
-    engine->world().resource<systems::OceanRenderer>().pass.failed = true;
+    engine->world().resource<systems::OceanRenderer>().pass.fail({},
+                                                                 {"test: ocean.frag does not compile here"});
     const auto before = render_frames(*engine, 3);
     set(*engine, "scene.kind=ocean");
     const auto after = render_frames(*engine, 10);

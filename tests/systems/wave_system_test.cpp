@@ -53,6 +53,24 @@ TEST(WaveSystem, NewResolutionKeepsTheCompiledPipelinesAndGivesAFlatFieldOfTheNe
     EXPECT_EQ(std::count(f.hv.begin(), f.hv.end(), 0.0f), 96 * 96 * 2) << "the new field starts flat";
 }
 
+// The same through the live path (the wave rebuild system, which builds field and surface both or
+// neither): a wave.resolution edit while running compiles nothing on the frame thread.
+TEST(WaveSystem, ALiveResolutionEditKeepsTheCompiledPipelines) {
+    auto e = quiet_engine(0.99f);
+    ASSERT_TRUE(e);
+    render_frames(*e, 2);
+    const auto& field = e->world().resource<systems::WaveField>();
+    const auto& surface = e->world().resource<systems::Surface>();
+    const unsigned step_program = field.step.id(), surface_program = surface.pipeline.id();
+    ASSERT_NE(step_program, 0u);
+    e->params().set(params::ParamId::wave_resolution, 96, params::ParamSource::CommandLine);
+    render_frames(*e, 1);
+    ASSERT_EQ(field.resolution, 96);
+    ASSERT_EQ(surface.resolution, 96);
+    EXPECT_EQ(field.step.id(), step_program);
+    EXPECT_EQ(surface.pipeline.id(), surface_program);
+}
+
 TEST(WaveSystem, RingStaysSymmetric) {
     auto e = quiet_engine(0.99f);
     ASSERT_TRUE(e);

@@ -14,7 +14,7 @@
 #include "params/param_store.hpp"
 #include "util/result.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 
 struct ParamBinding {
     struct Slot {
@@ -30,4 +30,4 @@ Result<ParamBinding> bind_params(const gpu::Pipeline& pipeline);
 // Sets every bound parameter's uniform on the pass (whose pipeline the binding was made for).
 void set_param_uniforms(gpu::RenderPass& pass, const ParamBinding& binding, const params::Params& params);
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

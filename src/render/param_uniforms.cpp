@@ -1,11 +1,11 @@
-#include "systems/param_uniforms.hpp"
+#include "render/param_uniforms.hpp"
 
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <variant>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 namespace {
 
@@ -64,4 +64,4 @@ void set_param_uniforms(gpu::RenderPass& pass, const ParamBinding& binding, cons
     }
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

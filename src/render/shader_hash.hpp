@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 constexpr std::uint32_t shader_mix_bits(std::uint32_t x) {
     x ^= x >> 15u;
@@ -24,4 +24,4 @@ constexpr double shader_unit_float(std::uint32_t h) {
     return static_cast<double>(h >> 8u) / 16777216.0;
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -1,7 +1,7 @@
-// Parameter uniforms are bound once per pipeline (systems/param_uniforms.hpp): the shipped shaders bind
+// Parameter uniforms are bound once per pipeline (render/param_uniforms.hpp): the shipped shaders bind
 // the parameters they read, and a uniform that looks like a parameter's but names none stops the build
 // with a message naming the pipeline, the uniform and the nearest parameter.
-#include "systems/param_uniforms.hpp"
+#include "render/param_uniforms.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "gpu/device.hpp"
 #include "platform/display.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 namespace {
 
 class ParamUniforms : public ::testing::Test {
@@ -69,4 +69,4 @@ TEST_F(ParamUniforms, AMisspelledParameterUniformIsAnErrorNamingItAndTheNearestP
 }
 
 }  // namespace
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -1,5 +1,5 @@
 // Which puddle shader variant the parameters select, and that every variant has its own slot and defines.
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "params/config_loader.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 namespace {
 
 using params::ParamId;
@@ -99,4 +99,4 @@ TEST(PuddleVariant, DescribeNamesTheChoices) {
 }
 
 }  // namespace
-}  // namespace puddle::systems
+}  // namespace puddle::render

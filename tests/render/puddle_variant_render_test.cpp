@@ -9,8 +9,8 @@
 namespace puddle::test {
 namespace {
 
-using systems::GroundKind;
-using systems::PuddleVariant;
+using render::GroundKind;
+using render::PuddleVariant;
 
 TEST(PuddleVariants, EveryVariantCompiles) {
     auto engine = make_engine(make_params({}), {64, 36});
@@ -20,12 +20,12 @@ TEST(PuddleVariants, EveryVariantCompiles) {
     for (bool raymarch : {false, true})
         for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
-                for (int t = 0; t < static_cast<int>(systems::tonemap_count); ++t) {
+                for (int t = 0; t < static_cast<int>(render::tonemap_count); ++t) {
                     const PuddleVariant v{.raymarch = raymarch,
                                           .ground = g,
                                           .env_rgbm = rgbm,
                                           .tonemap = static_cast<params::Tonemap>(t)};
-                    EXPECT_NE(renderer.pipeline(device, v), nullptr) << systems::describe(v);
+                    EXPECT_NE(renderer.pipeline(device, v), nullptr) << render::describe(v);
                 }
 }
 
@@ -43,7 +43,7 @@ TwoPictures render_both(std::initializer_list<std::string> sets, GroundKind forc
     ecs::World& w = engine->world();
     const auto& params = w.resource<params::Params>();
     const auto& env = w.resource<systems::Environment>();
-    out.chosen_variant = systems::choose_puddle_variant(params, env.rgbm);
+    out.chosen_variant = render::choose_puddle_variant(params, env.rgbm);
     PuddleVariant forced = out.chosen_variant;
     forced.ground = forced_ground;
     systems::render_system(engine->device(), params, w.resource<systems::Surface>(), env,

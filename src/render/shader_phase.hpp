@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 // rate * seconds modulo period, in [0, period): the float a shader adds where it used rate * time.
 // Rates may be negative (a term travelling the other way); period > 0.
@@ -32,4 +32,4 @@ struct Repetition {
 };
 Repetition repetition_at(double seconds, double period, double offset);
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

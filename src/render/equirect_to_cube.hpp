@@ -12,7 +12,7 @@
 #include "gpu/device.hpp"
 #include "util/result.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 
 // The face size `environment.face_size = 0` picks: a quarter of the panorama's width (one face spans a
 // quarter of the horizon), at most 1024 and at most what the GPU takes.
@@ -73,4 +73,4 @@ private:
 Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& panorama, int face_size,
                                       gpu::TextureFormat format, bool rgbm, int smallest_face_size);
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -12,7 +12,7 @@
 
 #include "params/param_store.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 
 enum class GroundKind { Checkerboard, Image, Hidden };
 
@@ -45,4 +45,4 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
 // "intersect, checkerboard, soft": for the log line that says a variant was built.
 std::string describe(const PuddleVariant& v);
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -1,12 +1,12 @@
-// Time for shaders (systems/shader_phase.hpp): phases, lattice shifts and repetitions stay small, exact
+// Time for shaders (render/shader_phase.hpp): phases, lattice shifts and repetitions stay small, exact
 // and continuous at any uptime, including past 2^31 and 2^32 cells.
-#include "systems/shader_phase.hpp"
+#include "render/shader_phase.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace puddle::systems {
+namespace puddle::render {
 namespace {
 
 constexpr double two_pi = 6.283185307179586;
@@ -66,4 +66,4 @@ TEST(RepetitionAt, CountsWholePeriodsFromTheOffsetAndTheAgeWithinOne) {
 }
 
 }  // namespace
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -1,13 +1,13 @@
-// The camera's basis (systems/view_basis.hpp): right-handed and orthonormal, no roll, the image plane
+// The camera's basis (render/view_basis.hpp): right-handed and orthonormal, no roll, the image plane
 // scaled by tan(fov / 2), and sensible axes when looking straight up or at the eye itself.
-#include "systems/view_basis.hpp"
+#include "render/view_basis.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 
-namespace puddle::systems {
+namespace puddle::render {
 namespace {
 
 void expect_orthonormal(const ViewBasis& b) {
@@ -49,4 +49,4 @@ TEST(ViewBasis, LookingStraightUpOrDownOrAtTheEyeStillGivesABasis) {
 }
 
 }  // namespace
-}  // namespace puddle::systems
+}  // namespace puddle::render

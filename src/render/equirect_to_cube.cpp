@@ -1,4 +1,4 @@
-#include "systems/equirect_to_cube.hpp"
+#include "render/equirect_to_cube.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -6,9 +6,9 @@
 #include <cstddef>
 #include <span>
 
-#include "systems/banded_upload.hpp"
+#include "render/banded_upload.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFormat format, int face_size,
                                              int smallest_face_size) {
     auto make = [&](int size) {
@@ -170,4 +170,4 @@ Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& 
     }
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

@@ -9,7 +9,7 @@
 #include "assets/image.hpp"
 #include "gpu/texture.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 
 // Uploads the next band of `image`, at most `texel_budget` texels (at least one row), into `level` (and
 // `face`) of `texture`, from row `next_row` on, and advances it. True once the last row is up.
@@ -25,4 +25,4 @@ inline bool upload_next_band(gpu::Texture& texture, const assets::Image& image, 
     return next_row >= image.height;
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

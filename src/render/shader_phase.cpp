@@ -1,8 +1,8 @@
-#include "systems/shader_phase.hpp"
+#include "render/shader_phase.hpp"
 
 #include <cmath>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 namespace {
 // x modulo period in [0, period): floor-based, so negative x wraps upward like a phase should.
@@ -32,4 +32,4 @@ Repetition repetition_at(double seconds, double period, double offset) {
     return {.index = whole_mod_2_32(s), .age = static_cast<float>((s - std::floor(s)) * period)};
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

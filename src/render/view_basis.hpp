@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 struct ViewBasis {
     glm::vec3 forward{0, 0, -1}, right{1, 0, 0}, up{0, 1, 0};
@@ -17,4 +17,4 @@ struct ViewBasis {
 // Degenerate input (eye on the target, looking straight down) still gives a usable basis.
 ViewBasis view_basis(glm::vec3 eye, glm::vec3 target, float fov_degrees, float aspect);
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

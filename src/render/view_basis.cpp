@@ -1,10 +1,10 @@
-#include "systems/view_basis.hpp"
+#include "render/view_basis.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-namespace puddle::systems {
+namespace puddle::render {
 
 ViewBasis view_basis(glm::vec3 eye, glm::vec3 target, float fov_degrees, float aspect) {
     ViewBasis b;
@@ -18,4 +18,4 @@ ViewBasis view_basis(glm::vec3 eye, glm::vec3 target, float fov_degrees, float a
     return b;
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

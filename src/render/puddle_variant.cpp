@@ -1,4 +1,4 @@
-#include "systems/puddle_variant.hpp"
+#include "render/puddle_variant.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "params/registry.hpp"
 
-namespace puddle::systems {
+namespace puddle::render {
 
 using params::ParamId;
 
@@ -65,4 +65,4 @@ std::string describe(const PuddleVariant& v) {
                        params::choice_name(v.tonemap));
 }
 
-}  // namespace puddle::systems
+}  // namespace puddle::render

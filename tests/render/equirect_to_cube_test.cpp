@@ -1,7 +1,7 @@
-// A panorama becomes a cube map (systems/equirect_to_cube.hpp) whose faces look where GL says they look, in
+// A panorama becomes a cube map (render/equirect_to_cube.hpp) whose faces look where GL says they look, in
 // half floats or, where half-float targets are missing (forced here), RGBM-style RGBA8; converted in bands
 // of rows over many steps it gives the same texels as whole faces.
-#include "systems/equirect_to_cube.hpp"
+#include "render/equirect_to_cube.hpp"
 
 #include <gtest/gtest.h>
 
@@ -81,7 +81,7 @@ TEST_P(EquirectToCube, SixDirectionsOfSixColoursGiveFaceCentresOfThoseColours) {
         panorama_of(256, [](glm::vec3 d) { return kAxisColours[dominant_axis(d)]; });
 
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
-    auto cube = systems::equirect_to_cube(device, panorama, 32, format, forced_fallback, 32);
+    auto cube = render::equirect_to_cube(device, panorama, 32, format, forced_fallback, 32);
     ASSERT_TRUE(cube.ok()) << cube.error().message;
     for (int face = 0; face < 6; ++face) {
         const auto texels = device.read_texture(*cube, face);
@@ -101,7 +101,7 @@ TEST_P(EquirectToCube, EveryTexelHoldsThePanoramaInTheDirectionGlSamplesIt) {
     const int size = 16;
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
     auto cube =
-        systems::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback, size);
+        render::equirect_to_cube(device, panorama_of(512, radiance), size, format, forced_fallback, size);
     ASSERT_TRUE(cube.ok()) << cube.error().message;
     for (int face = 0; face < 6; ++face) {
         const auto texels = device.read_texture(*cube, face);
@@ -125,10 +125,10 @@ TEST_P(EquirectToCube, BandsOfRowsOverManyStepsGiveTheSameCubeAsWholeFaces) {
     const assets::Image panorama = panorama_of(256, [](glm::vec3 d) { return 0.5f + 0.5f * d; });
     const auto format = forced_fallback ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F;
     const int size = 16;
-    auto whole = systems::equirect_to_cube(device, panorama, size, format, forced_fallback, size);
+    auto whole = render::equirect_to_cube(device, panorama, size, format, forced_fallback, size);
     ASSERT_TRUE(whole.ok()) << whole.error().message;
-    systems::EquirectToCube banded(systems::panorama_mip_chain(panorama, device.caps().max_texture_size),
-                                   size, format, forced_fallback, size);
+    render::EquirectToCube banded(render::panorama_mip_chain(panorama, device.caps().max_texture_size), size,
+                                  format, forced_fallback, size);
     int steps = 0;
     for (bool done = false; !done; ++steps) {
         auto r = banded.step(device, 3 * size);  // three rows of a level-0 face, one panorama row
