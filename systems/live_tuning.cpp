@@ -67,7 +67,9 @@ void apply_action(LiveTuning& t, const io::KnobAction& a, const params::Params& 
         case io::KnobAction::Kind::Turn: {
             const auto& d = params::decl(*k.param);
             const auto& held = t.layers.knob(*k.param);
-            const params::ParamValue& base = held ? *held : current.at(*k.param);
+            const bool was_held = held.has_value();
+            const params::ParamValue base =
+                held ? *held : current.at(*k.param);  // a copy: set_knob changes held
             if (d.kind == ParamKind::Int) {
                 const double step = a.amount >= 0 ? std::max(1.0, std::round(a.amount))
                                                   : std::min(-1.0, std::round(a.amount));
@@ -81,6 +83,11 @@ void apply_action(LiveTuning& t, const io::KnobAction& a, const params::Params& 
                 double v = static_cast<double>(std::get<float>(base)) + a.amount;
                 if (grid > 0) v = std::round(v / grid) * grid;
                 t.layers.set_knob(*k.param, static_cast<float>(v));
+            }
+            if (was_held && *t.layers.knob(*k.param) == base) {  // turned on past an end of its range
+                spdlog::debug("knob: {} stays at {} (allowed {})", d.name, params::format_value(base),
+                              params::describe_range(d));
+                return;
             }
             break;
         }

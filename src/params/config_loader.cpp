@@ -39,8 +39,8 @@ std::string toml_text(const toml::node& n) {
 // the range before they are narrowed (number_value); the error names the key and the value as written.
 Result<ParamValue> convert(const ParamDecl& d, const toml::node& n) {
     auto wrong_type = [&] {
-        return make_error(ExitCode::Config, "{} = {} has the wrong type: expected {}", d.name, toml_text(n),
-                          describe_range(d));
+        return make_error(ExitCode::Config, "{} = {} has the wrong type: expected {}", d.name,
+                          safe_quote(toml_text(n)), describe_range(d));
     };
     auto number = [&]() -> Result<ParamValue> {
         if (auto i = n.value_exact<int64_t>()) return number_value(d, *i);
