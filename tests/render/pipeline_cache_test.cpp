@@ -14,6 +14,7 @@
 
 #include "support/gated_worker_context.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/log_lines.hpp"
 
 namespace puddle::test {
 namespace {
@@ -55,24 +56,8 @@ struct Builds {
 };
 
 // The error lines logged while it lives.
-class ErrorLines {
-public:
-    ErrorLines() : sink_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(64)) {
-        sink_->set_level(spdlog::level::err);
-        spdlog::default_logger()->sinks().push_back(sink_);
-    }
-    ~ErrorLines() {
-        auto& sinks = spdlog::default_logger()->sinks();
-        sinks.erase(std::remove(sinks.begin(), sinks.end(), sink_), sinks.end());
-    }
-    long count(const std::string& part) const {
-        const auto lines = sink_->last_formatted();
-        return std::count_if(lines.begin(), lines.end(),
-                             [&](const std::string& l) { return l.find(part) != std::string::npos; });
-    }
-
-private:
-    std::shared_ptr<spdlog::sinks::ringbuffer_sink_mt> sink_;
+struct ErrorLines : test::LogLines {
+    ErrorLines() : LogLines(spdlog::level::err) {}
 };
 
 class PipelineCacheTest : public DeviceFixture {

@@ -13,6 +13,7 @@
 #include <future>
 
 #include "io/gpio_mock.hpp"
+#include "support/log_lines.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::systems {
@@ -176,24 +177,8 @@ TEST(LiveTuning, KnobTurnsChangeTheParameterClampedAndSaveTheStateAfterADelay) {
 }
 
 // The log lines at warning level and above while it lives.
-class Warnings {
-public:
-    Warnings() : sink_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(64)) {
-        sink_->set_level(spdlog::level::warn);
-        spdlog::default_logger()->sinks().push_back(sink_);
-    }
-    ~Warnings() {
-        auto& sinks = spdlog::default_logger()->sinks();
-        sinks.erase(std::remove(sinks.begin(), sinks.end(), sink_), sinks.end());
-    }
-    long count(const std::string& part) const {
-        const auto lines = sink_->last_formatted();
-        return std::count_if(lines.begin(), lines.end(),
-                             [&](const std::string& l) { return l.find(part) != std::string::npos; });
-    }
-
-private:
-    std::shared_ptr<spdlog::sinks::ringbuffer_sink_mt> sink_;
+struct Warnings : test::LogLines {
+    Warnings() : LogLines(spdlog::level::warn) {}
 };
 
 // A save that fails the same way at every knob turn (a folder in the state's place, a refusal, a full
