@@ -3,12 +3,15 @@
 #include <spdlog/spdlog.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <thread>
 
 #include "camera/frame_layout.hpp"
 #include "camera/yuv_matrix.hpp"
+#include "render/view_basis.hpp"
 
 namespace puddle::systems {
 
@@ -75,40 +78,47 @@ const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::Camer
 
 }  // namespace
 
-Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
-    env.built = true;
-    env.support = device.external_image_support();
-    env.zero_copy = env.support.dmabuf_import;
-    auto make = [&](const char* label, const char* file, std::vector<std::string> defines,
-                    std::vector<std::string> textures, gpu::Pipeline& out) -> Result<void> {
-        auto p = device.create_pipeline({.label = label,
-                                         .fragment = file,
-                                         .defines = std::move(defines),
-                                         .textures = std::move(textures)});
-        if (!p) return p.error();
-        out = std::move(p).value();
-        return {};
-    };
+namespace {
+
+// The five passes, each with where its pipeline goes; the external one only where the sampler exists.
+struct CameraPass {
+    const char* label;
+    const char* file;
+    std::vector<std::string> defines, textures;
+    gpu::Pipeline CameraEnvironment::*out;
+};
+
+std::vector<CameraPass> camera_passes(const CameraEnvironment& env) {
     const std::vector<std::string> planes{"u_plane0", "u_plane1"}, cube{"u_env", "u_camera"};
-    if (auto r =
-            make("camera convert (YUYV)", "camera_convert.frag", {"LAYOUT_YUYV"}, planes, env.convert_yuyv);
-        !r)
-        return r;
-    if (auto r =
-            make("camera convert (NV12)", "camera_convert.frag", {"LAYOUT_NV12"}, planes, env.convert_nv12);
-        !r)
-        return r;
-    if (env.support.external_sampler) {
-        if (auto r = make("camera convert (external)", "camera_convert.frag", {"EXTERNAL_OES"},
-                          {"u_external"}, env.convert_external);
-            !r)
-            return r;
-    }
-    if (auto r = make("camera cube (planar)", "camera_cube.frag", {}, cube, env.cube_planar); !r) return r;
-    if (auto r = make("camera cube (mirror ball)", "camera_cube.frag", {"MAPPING_MIRROR_BALL"}, cube,
-                      env.cube_mirror_ball);
-        !r)
-        return r;
+    std::vector<CameraPass> passes{
+        {"camera convert (YUYV)",
+         "camera_convert.frag",
+         {"LAYOUT_YUYV"},
+         planes,
+         &CameraEnvironment::convert_yuyv},
+        {"camera convert (NV12)",
+         "camera_convert.frag",
+         {"LAYOUT_NV12"},
+         planes,
+         &CameraEnvironment::convert_nv12},
+        {"camera cube (planar)", "camera_cube.frag", {}, cube, &CameraEnvironment::cube_planar},
+        {"camera cube (mirror ball)",
+         "camera_cube.frag",
+         {"MAPPING_MIRROR_BALL"},
+         cube,
+         &CameraEnvironment::cube_mirror_ball},
+    };
+    if (env.support.external_sampler)
+        passes.push_back({"camera convert (external)",
+                          "camera_convert.frag",
+                          {"EXTERNAL_OES"},
+                          {"u_external"},
+                          &CameraEnvironment::convert_external});
+    return passes;
+}
+
+// Everything but the pipelines: parameter bindings, samplers and the cube.
+Result<void> finish_camera_resources(gpu::Device& device, CameraEnvironment& env) {
     for (auto [pipeline, binding] : {std::pair{&env.cube_planar, &env.cube_planar_params},
                                      std::pair{&env.cube_mirror_ball, &env.cube_mirror_ball_params}}) {
         auto bound = render::bind_params(*pipeline);
@@ -130,15 +140,59 @@ Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env)
     return {};
 }
 
+}  // namespace
+
+std::optional<Result<void>> poll_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
+    if (env.built) return Result<void>{};
+    if (env.building.empty()) {  // the first call: ask for all of them
+        env.support = device.external_image_support();
+        env.zero_copy = env.support.dmabuf_import;
+        for (const CameraPass& pass : camera_passes(env))
+            env.building.push_back(device.request_pipeline({.label = pass.label,
+                                                            .fragment = pass.file,
+                                                            .defines = pass.defines,
+                                                            .textures = pass.textures}));
+    }
+    const std::vector<CameraPass> passes = camera_passes(env);
+    bool waiting = false;
+    for (std::size_t i = 0; i < passes.size(); ++i) {
+        if (!env.building[i].active()) continue;  // taken already
+        auto built = device.take_pipeline(env.building[i]);
+        if (!built) {
+            waiting = true;
+            continue;
+        }
+        if (!*built) {
+            env.building.clear();
+            env.built = true;  // not tried again: the same shaders fail the same way
+            return Result<void>(built->error());
+        }
+        env.*passes[i].out = std::move(*built).value();
+    }
+    if (waiting) return std::nullopt;
+    env.building.clear();
+    env.built = true;
+    return finish_camera_resources(device, env);
+}
+
+Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
+    for (;;) {
+        if (auto done = poll_camera_pipelines(device, env)) return *done;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
 Result<void> upload_camera_frame(gpu::Device& device, const camera::CameraImage& image,
                                  CameraEnvironment& env) {
-    if (!env.built) {
-        if (auto r = build_camera_pipelines(device, env); !r) {
-            env.failed = true;
-            return r;
-        }
-    }
     if (env.failed) return {};
+    // Built off the frame thread (Device::request_pipeline): until they are ready the frame is skipped and
+    // the puddle keeps reflecting the cubemap.
+    auto ready = poll_camera_pipelines(device, env);
+    if (!ready) return {};
+    if (!*ready) {
+        env.failed = true;
+        return *ready;
+    }
     // Checked before anything changes: a frame that does not fit its format is not uploaded (and the
     // colour texture keeps the previous one). The capture drops such frames already; this guards the
     // GPU, which would read past the end.
@@ -234,13 +288,11 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
     env.cube_params_revision = params.revision();
 
     // The image centre looks toward -X, 35 degrees up: where the default view's reflection looks.
-    const glm::vec3 axis = glm::normalize(glm::vec3(-1.0f, 0.7f, 0.0f));
-    const glm::vec3 right = glm::normalize(glm::cross(axis, glm::vec3(0, 1, 0)));
-    const glm::vec3 up = glm::cross(right, axis);
     const bool ball = params.get<ParamId::environment_camera_mapping>() == params::CameraMapping::mirror_ball;
     const float aspect =
         static_cast<float>(env.colour.width()) / static_cast<float>(std::max(env.colour.height(), 1));
-    const float tan_half = std::tan(glm::radians(params.get<ParamId::environment_camera_fov>()) * 0.5f);
+    const render::ViewBasis view = render::view_basis(glm::vec3(0), glm::vec3(-1.0f, 0.7f, 0.0f),
+                                                      params.get<ParamId::environment_camera_fov>(), aspect);
     for (int face = 0; face < 6; ++face) {
         auto pass = device.begin_pass(
             {.label = "camera cube face",
@@ -251,11 +303,11 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
             .set_texture(1, env.colour, env.linear)
             .set("u_env_rgbm", sky.rgbm ? 1 : 0)
             .set("u_face", face)
-            .set("u_axis", axis)
-            .set("u_right", right)
-            .set("u_up", up)
+            .set("u_axis", view.forward)
+            .set("u_right", view.right)
+            .set("u_up", view.up)
             .set("u_aspect", aspect)
-            .set("u_tan_half_fov", tan_half);
+            .set("u_tan_half_fov", view.scale.y);
         render::set_param_uniforms(pass, ball ? env.cube_mirror_ball_params : env.cube_planar_params, params);
         pass.draw_fullscreen();
     }

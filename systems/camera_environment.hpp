@@ -5,6 +5,7 @@
 // samples that cube in place of the cubemap while it is active: the puddle shader is unchanged.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "camera/camera_image.hpp"
@@ -29,8 +30,9 @@ struct CameraEnvironment {
     std::vector<gpu::ExternalImage> imported;                          // per driver buffer (zero-copy path)
     gpu::ExternalImageSupport support;
     bool zero_copy = false;  // dmabuf import available: use it for frames that carry a dmabuf
-    bool built = false;      // pipelines made (on first use: most runs never need them)
-    bool failed = false;     // a GPU error disabled the camera environment; the cubemap stays
+    std::vector<gpu::PipelineRequest> building;  // the pipelines being built, off the frame thread
+    bool built = false;   // pipelines made, or failed (on first use: most runs never need them)
+    bool failed = false;  // a GPU error disabled the camera environment; the cubemap stays
 
     camera::PixelLayout layout = camera::PixelLayout::Rgba;
     camera::CameraImage pending;  // the uploaded frame's description (data not kept)
@@ -44,6 +46,11 @@ struct CameraEnvironment {
     const gpu::Texture* reflection() const { return has_frame && !failed ? &cube : nullptr; }
 };
 
+// Asks for the pipelines on the first call and takes them as they are built (Device::request_pipeline:
+// off the frame thread where background compiles run); nothing while some are still building, then the
+// result once: an error (a shader that does not build) is not tried again.
+std::optional<Result<void>> poll_camera_pipelines(gpu::Device& device, CameraEnvironment& env);
+// The same, waiting until they are built (tests and the benchmark).
 Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env);
 
 // Input stage: hands one new frame to the GPU (a copy, or an import of its dmabuf). No conversion yet.

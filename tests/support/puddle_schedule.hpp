@@ -10,30 +10,30 @@
 namespace puddle::test {
 
 inline const std::vector<std::string> puddle_plugin_schedule = {
-        "input/frame clock (reads FrameTime, Params; writes FrameClock)",
-        "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
-        "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
-        "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, "
-        "AnalyticRipples, "
-        "GridDrops, ShownLook)",
-        "input/camera feed (reads Params, FrameTime; writes CameraFeed, Device, CameraEnvironment)",
-        "simulate/begin step (writes FrameClock)",
-        "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, "
-        "LiveDrops)",
-        "simulate/wave if the wave field is in use (reads Params, LiveDrops; writes Device, WaveField)",
-        "render/surface if the wave field is in use (reads WaveField; writes Device, Surface)",
-        "render/camera environment (reads Params, Environment; writes Device, CameraEnvironment)",
-        "render/analytic ripples if drops are analytic (reads Params, FrameClock; writes Device, "
-        "AnalyticRipples, "
-        "Surface)",
-        "render/grid drops if drops are grid (reads Params, FrameClock; writes Device, GridDrops, Surface)",
-        "render/puddle if look is puddle (reads Params, Surface, Environment, Ground, RenderTarget, "
-        "CameraEnvironment; writes Device, PuddleRenderer)",
-        "render/ocean if look is ocean (reads Params, FrameClock, RenderTarget; writes Device, "
-        "OceanRenderer)",
-        "render/street if look is street (reads Params, FrameClock, RenderTarget; writes Device, "
-        "StreetRenderer)",
-        "render/rain overlay (reads Params, FrameClock, RenderTarget; writes Device, RainOverlay)",
-    };
+    "input/frame clock (reads FrameTime, Params; writes FrameClock)",
+    "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
+    "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
+    "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, "
+    "AnalyticRipples, "
+    "GridDrops, ShownLook)",
+    "input/camera feed (reads Params, FrameTime; writes CameraFeed, Device, CameraEnvironment)",
+    "simulate/begin step (writes FrameClock)",
+    "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, "
+    "LiveDrops)",
+    "simulate/wave if the wave field is in use (reads Params, LiveDrops; writes Device, WaveField)",
+    "render/surface if the wave field is in use (reads WaveField; writes Device, Surface)",
+    "render/camera environment (reads Params, Environment; writes Device, CameraEnvironment)",
+    "render/analytic ripples if drops are analytic (reads Params, FrameClock; writes Device, "
+    "AnalyticRipples, "
+    "Surface)",
+    "render/grid drops if drops are grid (reads Params, FrameClock; writes Device, GridDrops, Surface)",
+    "render/puddle if look is puddle (reads Params, Surface, Environment, Ground, RenderTarget, "
+    "CameraEnvironment; writes Device, PuddleRenderer)",
+    "render/ocean if look is ocean (reads Params, FrameClock, RenderTarget; writes Device, "
+    "OceanRenderer)",
+    "render/street if look is street (reads Params, FrameClock, RenderTarget; writes Device, "
+    "StreetRenderer)",
+    "render/rain overlay (reads Params, FrameClock, RenderTarget; writes Device, RainOverlay)",
+};
 
 }  // namespace puddle::test

@@ -5,13 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <glm/common.hpp>
 #include <iterator>
+#include <thread>
 
 #include "camera/yuv_matrix.hpp"
+#include "support/gated_worker_context.hpp"
 #include "support/gpu_fixture.hpp"
 
 namespace puddle::test {
@@ -61,6 +64,43 @@ protected:
     std::unique_ptr<app::Engine> engine;
     CameraEnvironment env;
 };
+
+// The camera's five pipelines are built off the frame thread like a new look's (they were compiled on the
+// frame thread at the first camera frame): while the worker is held, frames are taken and skipped and
+// the puddle keeps the cubemap; once it builds, the next frame shows.
+TEST(CameraEnvironmentPipelines, AreBuiltOffTheFrameThreadAndTheCubemapStaysMeanwhile) {
+    auto engine = make_engine(make_params({}), {64, 36});
+    ASSERT_TRUE(engine);
+    auto context = engine->display().create_worker_context();
+    ASSERT_TRUE(context) << context.error().message;
+    auto gated = std::make_unique<GatedContext>(std::move(context).value());
+    GatedContext& gate = *gated;
+    engine->device().start_background_compiles(std::move(gated));
+    std::vector<std::uint8_t> orange;
+    for (int i = 0; i < 16 * 9; ++i) orange.insert(orange.end(), {240, 120, 20, 255});
+    const CameraImage image{.layout = PixelLayout::Rgba,
+                            .width = 16,
+                            .height = 9,
+                            .stride = 16 * 4,
+                            .data = std::as_bytes(std::span(orange)),
+                            .full_range = true};
+    gpu::Device& device = engine->device();
+    const auto& sky = engine->world().resource<systems::Environment>();
+    CameraEnvironment env;
+    for (int frame = 0; frame < 5; ++frame) {
+        ASSERT_TRUE(systems::upload_camera_frame(device, image, env));
+        systems::camera_environment_system(device, engine->params(), sky, env);
+        EXPECT_EQ(env.reflection(), nullptr) << "frame " << frame << ": no pipeline is built yet";
+    }
+    gate.open();
+    for (int frame = 0; frame < 2000 && !env.reflection(); ++frame) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        ASSERT_TRUE(systems::upload_camera_frame(device, image, env));
+        systems::camera_environment_system(device, engine->params(), sky, env);
+    }
+    ASSERT_NE(env.reflection(), nullptr) << "the camera never showed once the worker built its pipelines";
+    EXPECT_FALSE(env.failed);
+}
 
 TEST_F(CameraEnvironmentTest, YuyvLimitedBt709ConvertsToTheExpectedColours) {
     // Four pixel pairs: white, red, green, blue in BT.709 limited range; rows padded as drivers do.
