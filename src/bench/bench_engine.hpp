@@ -16,7 +16,8 @@
 namespace puddle::bench {
 
 inline constexpr std::array<glm::ivec2, 2> sizes{glm::ivec2{1280, 720}, glm::ivec2{1920, 1080}};
-inline constexpr std::array<const char*, 2> methods{"intersect", "raymarch"};
+inline constexpr std::array<params::RenderMethod, 2> methods{params::RenderMethod::intersect,
+                                                             params::RenderMethod::raymarch};
 
 // The engine for one frame size plus the floor pass's own objects.
 struct Bench {

@@ -78,9 +78,9 @@ namespace {
 
 // The render shader's estimated per-pixel cost for one method: the variant the default parameters select
 // (render/puddle_variant.hpp), with the default march steps.
-bench::ShaderCost shader_cost(const char* method) {
+bench::ShaderCost shader_cost(params::RenderMethod method) {
     render::PuddleVariant v = render::choose_puddle_variant(Params{}, false);
-    v.raymarch = std::string(method) == "raymarch";
+    v.raymarch = method == params::RenderMethod::raymarch;
     auto shader = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
     if (!shader) return {};
     return bench::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
@@ -93,17 +93,20 @@ Figures figures(const Collector& c) {
     for (glm::ivec2 s : sizes) {
         const auto floor = c.ms("floor/" + size_name(s));
         for (const char* stage : {"render", "frame"})
-            for (const char* m : methods)
-                if (const auto ms = c.ms(fmt::format("{}/{}/{}", stage, m, size_name(s))); ms && floor)
-                    f[fmt::format("{}/{}/{} x floor", stage, m, size_name(s))] = *ms / *floor;
+            for (params::RenderMethod m : methods)
+                if (const auto ms =
+                        c.ms(fmt::format("{}/{}/{}", stage, params::choice_name(m), size_name(s)));
+                    ms && floor)
+                    f[fmt::format("{}/{}/{} x floor", stage, params::choice_name(m), size_name(s))] =
+                        *ms / *floor;
         const auto rm = c.ms("render/raymarch/" + size_name(s)),
                    in = c.ms("render/intersect/" + size_name(s));
         if (rm && in) f[fmt::format("render/intersect/{} x raymarch", size_name(s))] = *in / *rm;
     }
-    for (const char* m : methods) {
+    for (params::RenderMethod m : methods) {
         const bench::ShaderCost cost = shader_cost(m);
-        f[fmt::format("shader/{} texture fetches", m)] = cost.texture_fetches;
-        f[fmt::format("shader/{} alu ops", m)] = cost.alu_ops;
+        f[fmt::format("shader/{} texture fetches", params::choice_name(m))] = cost.texture_fetches;
+        f[fmt::format("shader/{} alu ops", params::choice_name(m))] = cost.alu_ops;
     }
     return f;
 }
@@ -112,10 +115,11 @@ Figures figures(const Collector& c) {
 bool print_against_baseline(const Figures& now, const Figures& baseline, const std::string& path) {
     std::printf(
         "\nRender shader, estimated per pixel (longest path, from the source; bench/shader_cost.hpp)\n");
-    for (const char* m : methods)
-        std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n", m,
-                    now.at(fmt::format("shader/{} texture fetches", m)),
-                    now.at(fmt::format("shader/{} alu ops", m)));
+    for (params::RenderMethod m : methods)
+        std::printf("  %-10s %3.0f texture fetches, %4.0f ALU ops\n",
+                    std::string(params::choice_name(m)).c_str(),
+                    now.at(fmt::format("shader/{} texture fetches", params::choice_name(m))),
+                    now.at(fmt::format("shader/{} alu ops", params::choice_name(m))));
     return check_baseline(now, baseline, path);
 }
 

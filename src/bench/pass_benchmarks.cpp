@@ -18,9 +18,9 @@ using params::Params;
 
 namespace {
 
-void set_method(Params& params, const char* method) {
+void set_method(Params& params, params::RenderMethod method) {
     // CommandLine is the highest source, so this always takes.
-    params.set(ParamId::render_method, std::string(method), params::ParamSource::CommandLine);
+    params.set<ParamId::render_method>(method, params::ParamSource::CommandLine);
 }
 
 void bench_floor(benchmark::State& state, glm::ivec2 size) {
@@ -54,7 +54,7 @@ void bench_surface(benchmark::State& state, glm::ivec2 size) {
     });
 }
 
-void bench_render(benchmark::State& state, glm::ivec2 size, const char* method) {
+void bench_render(benchmark::State& state, glm::ivec2 size, params::RenderMethod method) {
     Bench* b = bench_for(size, state);
     if (!b) return;
     ecs::World& w = b->engine->world();
@@ -68,7 +68,7 @@ void bench_render(benchmark::State& state, glm::ivec2 size, const char* method) 
 }
 
 // A whole frame at 60 Hz: exactly one wave step (at the default 60 steps/s), surface, render, present.
-void bench_frame(benchmark::State& state, glm::ivec2 size, const char* method) {
+void bench_frame(benchmark::State& state, glm::ivec2 size, params::RenderMethod method) {
     Bench* b = bench_for(size, state);
     if (!b) return;
     set_method(b->engine->params(), method);
@@ -89,11 +89,11 @@ void register_pass_benchmarks() {
             add_benchmark(fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>()),
                           [s](benchmark::State& st) { bench_wave_step(st, s); });
         add_benchmark("surface/" + n, [s](benchmark::State& st) { bench_surface(st, s); });
-        for (const char* m : methods)
-            add_benchmark(fmt::format("render/{}/{}", m, n),
+        for (params::RenderMethod m : methods)
+            add_benchmark(fmt::format("render/{}/{}", params::choice_name(m), n),
                           [s, m](benchmark::State& st) { bench_render(st, s, m); });
-        for (const char* m : methods)
-            add_benchmark(fmt::format("frame/{}/{}", m, n),
+        for (params::RenderMethod m : methods)
+            add_benchmark(fmt::format("frame/{}/{}", params::choice_name(m), n),
                           [s, m](benchmark::State& st) { bench_frame(st, s, m); });
     }
 }

@@ -1,5 +1,7 @@
 #include "params/param_store.hpp"
 
+#include <algorithm>
+
 namespace puddle::params {
 
 std::string_view source_name(ParamSource s) {
@@ -26,7 +28,7 @@ void Params::store(std::size_t k, ParamValue value) {
     values_[k] = std::move(value);
     const ParamDecl& d = param_decls()[k];
     if (d.kind != ParamKind::Enum) return;
-    // Values are validated before they reach Params, so the choice is always found.
+    // set() refused any text that is no choice, so the choice is always found.
     const auto& text = std::get<std::string>(values_[k]);
     for (std::size_t c = 0; c < d.choices.size(); ++c)
         if (d.choices[c] == text) choices_[k] = static_cast<std::uint8_t>(c);
@@ -35,6 +37,11 @@ void Params::store(std::size_t k, ParamValue value) {
 bool Params::set(ParamId id, ParamValue value, ParamSource from) {
     const std::size_t k = index(id);
     if (from < sources_[k]) return false;
+    if (value.index() != values_[k].index()) return false;  // another kind than declared
+    if (const ParamDecl& d = param_decls()[k]; d.kind == ParamKind::Enum) {
+        const auto& text = std::get<std::string>(value);
+        if (std::find(d.choices.begin(), d.choices.end(), text) == d.choices.end()) return false;
+    }
     sources_[k] = from;
     if (values_[k] != value) {
         store(k, std::move(value));

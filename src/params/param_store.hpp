@@ -44,7 +44,17 @@ public:
 
     // Sets a value that was validated against its declaration. Returns false (and changes nothing) when
     // the current value comes from a higher-precedence source.
+    // A value of another kind than the declaration's, or an enum text that is no choice, is refused too
+    // (false): read back through get<>(), it would be a wrong type.
     bool set(ParamId id, ParamValue value, ParamSource from);
+    // The typed set, for code (tests, the benchmark): a wrong type or an unknown choice does not compile.
+    template <ParamId id>
+    bool set(ParamType<id> value, ParamSource from) {
+        if constexpr (std::is_enum_v<ParamType<id>>)
+            return set(id, ParamValue(std::string(choice_name(value))), from);
+        else
+            return set(id, ParamValue(std::move(value)), from);
+    }
     // Takes every value and source of `next` (a freshly composed set, see ParamLayers); the revision
     // moves on only when a value changed, so systems rebuild nothing for a no-op reload.
     void replace_with(const Params& next);

@@ -80,3 +80,33 @@ TEST(Params, SourceNames) {
 
 }  // namespace
 }  // namespace puddle::params
+
+namespace puddle::params {
+namespace {
+
+// A value that get<>() could not read back as its declared type is refused, not stored: a wrong kind, or
+// an enum text that is no choice (it used to be stored, with the old choice index left behind).
+TEST(ParamsSet, AWrongKindOrAnUnknownChoiceIsRefusedAndChangesNothing) {
+    Params p;
+    const auto revision = p.revision();
+    EXPECT_FALSE(p.set(ParamId::render_method, ParamValue(std::string("fast")), ParamSource::CommandLine));
+    EXPECT_FALSE(p.set(ParamId::rain_drop_count, ParamValue(2.5f), ParamSource::CommandLine));
+    EXPECT_FALSE(p.set(ParamId::rain_intensity, ParamValue(3), ParamSource::CommandLine));
+    EXPECT_EQ(p.get<ParamId::render_method>(), RenderMethod::intersect);
+    EXPECT_EQ(std::get<std::string>(p.at(ParamId::render_method)), "intersect");
+    EXPECT_EQ(p.revision(), revision);
+    EXPECT_EQ(p.source(ParamId::render_method), ParamSource::Default);
+}
+
+TEST(ParamsSet, TheTypedSetStoresTheChoiceAndItsText) {
+    Params p;
+    EXPECT_TRUE(p.set<ParamId::render_method>(RenderMethod::raymarch, ParamSource::CommandLine));
+    EXPECT_EQ(p.get<ParamId::render_method>(), RenderMethod::raymarch);
+    EXPECT_EQ(std::get<std::string>(p.at(ParamId::render_method)), "raymarch");
+    EXPECT_TRUE(p.set<ParamId::rain_drop_count>(7, ParamSource::CommandLine));
+    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 7);
+    EXPECT_FALSE(p.set<ParamId::rain_drop_count>(9, ParamSource::Config)) << "below --set";
+}
+
+}  // namespace
+}  // namespace puddle::params
