@@ -174,7 +174,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::puddle));
     schedule.add(Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::ocean));
     schedule.add(Stage::Render, "street", street_system).run_if(look_is(Scene::street));
-    schedule.add(Stage::Render, "rain overlay", rain_overlay_system);
+    schedule.add(Stage::Render, "rain overlay", rain_overlay_system).run_if(rain_overlay_on());
     return {};
 }
 

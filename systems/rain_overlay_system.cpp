@@ -27,7 +27,6 @@ Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) {
 
 void rain_overlay_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                          RainOverlay& rain, const RenderTarget& target) {
-    if (!params.get<ParamId::overlay_rain>()) return;
     const render::BuiltPipeline* built = rain.pass.request(device, {}, rain_desc);
     if (!built) return;  // switched on live: drawn once built
     const gpu::FrameTarget& frame = target.target;

@@ -62,4 +62,9 @@ ecs::RunCondition wave_field_in_use() {
     return pulse;
 }
 
+ecs::RunCondition rain_overlay_on() {
+    return {"the rain overlay is on",
+            [](ecs::World& w) { return w.resource<params::Params>().get<params::ParamId::overlay_rain>(); }};
+}
+
 }  // namespace puddle::systems

@@ -31,7 +31,6 @@ public:
     Result<void> select_preset(const std::string& name);
     // The preset in effect ("" for none).
     const std::string& preset_name() const { return preset_name_; }
-    const std::string& knob_preset() const { return knob_preset_; }
     const Presets& presets() const { return presets_; }
 
     // Knob state. The value is clamped to the parameter's registered range.

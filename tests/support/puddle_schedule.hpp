@@ -33,7 +33,8 @@ inline const std::vector<std::string> puddle_plugin_schedule = {
     "OceanRenderer)",
     "render/street if look is street (reads Params, FrameClock, RenderTarget; writes Device, "
     "StreetRenderer)",
-    "render/rain overlay (reads Params, FrameClock, RenderTarget; writes Device, RainOverlay)",
+    "render/rain overlay if the rain overlay is on (reads Params, FrameClock, RenderTarget; writes Device, "
+    "RainOverlay)",
 };
 
 }  // namespace puddle::test

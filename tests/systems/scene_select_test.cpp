@@ -7,6 +7,7 @@
 
 #include "support/test_support.hpp"
 #include "systems/render_test_support.hpp"
+#include "systems/scene_select.hpp"
 
 namespace puddle::test {
 namespace {
@@ -57,3 +58,33 @@ TEST(SceneSwitch, ChangingDropModelBetweenFramesSwitchesTheRipples) {
 
 }  // namespace
 }  // namespace puddle::test
+
+namespace puddle::systems {
+namespace {
+
+// The run conditions read the look on screen (ShownLook) and Params, each by its name in describe().
+TEST(RunConditions, ReadTheLookOnScreenAndTheOverlaySwitch) {
+    ecs::World world;
+    auto& shown = world.insert_resource<ShownLook>();
+    auto& params = world.insert_resource<params::Params>();
+    const auto ocean = look_is(Scene::ocean), grid = drops_are(DropModel::grid), field = wave_field_in_use(),
+               overlay = rain_overlay_on();
+    EXPECT_EQ(ocean.name, "look is ocean");
+    EXPECT_EQ(grid.name, "drops are grid");
+    EXPECT_EQ(field.name, "the wave field is in use");
+    EXPECT_EQ(overlay.name, "the rain overlay is on");
+    EXPECT_FALSE(ocean.test(world));
+    EXPECT_TRUE(field.test(world)) << "the puddle with pulse drops";
+    shown.drops = DropModel::grid;
+    EXPECT_TRUE(grid.test(world));
+    EXPECT_FALSE(field.test(world));
+    shown.scene = Scene::ocean;
+    EXPECT_TRUE(ocean.test(world));
+    EXPECT_FALSE(grid.test(world)) << "drops belong to the puddle only";
+    EXPECT_FALSE(overlay.test(world));
+    params.set<params::ParamId::overlay_rain>(true, params::ParamSource::CommandLine);
+    EXPECT_TRUE(overlay.test(world));
+}
+
+}  // namespace
+}  // namespace puddle::systems
