@@ -1,5 +1,7 @@
 // Choosing the look (systems/scene_select.hpp): a scene or drop model changed between frames shows on the
 // next frame, the same as an engine started with it.
+#include "systems/scene_select.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 
 #include "support/test_support.hpp"
 #include "systems/render_test_support.hpp"
-#include "systems/scene_select.hpp"
 
 namespace puddle::test {
 namespace {
