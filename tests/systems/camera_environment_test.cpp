@@ -65,6 +65,21 @@ protected:
     CameraEnvironment env;
 };
 
+// A 16x9 RGBA camera frame of one orange, full range.
+struct OrangeFrame {
+    std::vector<std::uint8_t> bytes = [] {
+        std::vector<std::uint8_t> b;
+        for (int i = 0; i < 16 * 9; ++i) b.insert(b.end(), {240, 120, 20, 255});
+        return b;
+    }();
+    CameraImage image{.layout = PixelLayout::Rgba,
+                      .width = 16,
+                      .height = 9,
+                      .stride = 16 * 4,
+                      .data = std::as_bytes(std::span(bytes)),
+                      .full_range = true};
+};
+
 // The camera's five pipelines are built off the frame thread like a new look's (they were compiled on the
 // frame thread at the first camera frame): while the worker is held, frames are taken and skipped and
 // the puddle keeps the cubemap; once it builds, the next frame shows.
@@ -76,14 +91,8 @@ TEST(CameraEnvironmentPipelines, AreBuiltOffTheFrameThreadAndTheCubemapStaysMean
     auto gated = std::make_unique<GatedContext>(std::move(context).value());
     GatedContext& gate = *gated;
     engine->device().start_background_compiles(std::move(gated));
-    std::vector<std::uint8_t> orange;
-    for (int i = 0; i < 16 * 9; ++i) orange.insert(orange.end(), {240, 120, 20, 255});
-    const CameraImage image{.layout = PixelLayout::Rgba,
-                            .width = 16,
-                            .height = 9,
-                            .stride = 16 * 4,
-                            .data = std::as_bytes(std::span(orange)),
-                            .full_range = true};
+    const OrangeFrame orange;
+    const CameraImage& image = orange.image;
     gpu::Device& device = engine->device();
     const auto& sky = engine->world().resource<systems::Environment>();
     CameraEnvironment env;
@@ -218,14 +227,8 @@ TEST_F(CameraEnvironmentTest, ExternalSamplerPathMatchesTheSource) {
 
 TEST_F(CameraEnvironmentTest, BlendMixesTheCameraWithTheCubemap) {
     gpu::Device& device = engine->device();
-    std::vector<std::uint8_t> orange;
-    for (int i = 0; i < 16 * 9; ++i) orange.insert(orange.end(), {240, 120, 20, 255});
-    const CameraImage image{.layout = PixelLayout::Rgba,
-                            .width = 16,
-                            .height = 9,
-                            .stride = 16 * 4,
-                            .data = std::as_bytes(std::span(orange)),
-                            .full_range = true};
+    const OrangeFrame orange;
+    const CameraImage& image = orange.image;
     auto face_mean = [&](const char* blend, int face) {
         engine->params().set(params::ParamId::environment_camera_blend, std::stof(blend),
                              params::ParamSource::CommandLine);
