@@ -19,6 +19,7 @@
 #include "params/param_layers.hpp"
 #include "params/state_store.hpp"
 #include "util/background_job.hpp"
+#include "util/monotonic_clock.hpp"
 #include "util/result.hpp"
 
 namespace puddle::systems {
@@ -46,9 +47,6 @@ struct LiveTuning {
     bool layers_changed = false;
     const char* change_reason = "";  // for the log line
 };
-
-// Seconds on CLOCK_MONOTONIC, the clock of the kernel's GPIO event timestamps.
-double monotonic_seconds();
 
 // Creates the knobs of the current config (on `tuning.gpio`, when there are any) and starts watching
 // the config file. Call once, before the frame loop.

@@ -1,5 +1,7 @@
 #include "app/service_plugin.hpp"
 
+#include "util/monotonic_clock.hpp"
+
 namespace puddle::app {
 
 void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning) {
@@ -7,7 +9,7 @@ void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning) {
 }
 
 void watchdog_ping_system(ServiceNotify& service, const PresentStatus& presented) {
-    if (presented.result) service.frame_presented(systems::monotonic_seconds());
+    if (presented.result) service.frame_presented(monotonic_seconds());
 }
 
 void service_stopping_system(ServiceNotify& service) {
