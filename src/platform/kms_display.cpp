@@ -25,6 +25,7 @@
 
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
+#include "platform/drm_names.hpp"
 #include "platform/egl_context.hpp"
 #include "util/unique_fd.hpp"
 
