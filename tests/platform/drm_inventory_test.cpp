@@ -1,13 +1,13 @@
 // The DRM card list that the kms backend picks from and --check prints: the kernel's numbering order
 // (card10 after card2), render nodes and other names left out.
 #include "platform/drm_inventory.hpp"
-#include "platform/drm_names.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "platform/drm_names.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::platform {
