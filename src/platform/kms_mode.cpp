@@ -7,7 +7,7 @@
 #include <charconv>
 #include <vector>
 
-#include "platform/drm_inventory.hpp"
+#include "platform/drm_names.hpp"
 
 namespace puddle::platform {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/drm_inventory.hpp"
+#include "platform/drm_names.hpp"
 
 namespace puddle::platform {
 namespace {

@@ -133,6 +133,21 @@ TEST_F(BandedUploadTest, AHugeBudgetTakesTheRestAtOnce) {
     for (int y = 0; y < 7; ++y) EXPECT_EQ(row_is(image, texels, y, y >= 3), true) << "row " << y;
 }
 
+// A call with no row left (the image done, or empty) uploads nothing and says done: before the guard,
+// std::clamp got a high bound under its low one (undefined) and asked GL for a row past the end.
+TEST_F(BandedUploadTest, NoRowLeftIsDoneAtOnceAndUploadsNothing) {
+    const Image image = numbered(5, 3, PixelFormat::RGBA8);
+    gpu::Texture t = make(gpu::TextureKind::D2, gpu::TextureFormat::RGBA8, 5, 3);
+    int next_row = 3;
+    EXPECT_TRUE(upload_next_band(t, image, 0, 0, next_row, 10));
+    EXPECT_EQ(next_row, 3);
+    EXPECT_EQ(rows_holding(image, level0(t)), 0) << "nothing was written";
+    const Image empty = numbered(5, 0, PixelFormat::RGBA8);
+    int row = 0;
+    EXPECT_TRUE(upload_next_band(t, empty, 0, 0, row, 10));
+    EXPECT_EQ(row, 0);
+}
+
 // A float texel is 16 bytes: the band's offset into the image moves by rows of bytes, not of texels.
 TEST_F(BandedUploadTest, FloatImagesMoveByTheirOwnRowBytes) {
     if (!device_->caps().float_render_targets) GTEST_SKIP() << "no float render targets to read back";
