@@ -76,55 +76,46 @@ const gpu::ExternalImage* import_buffer(gpu::Device& device, const camera::Camer
     return &cached;
 }
 
-}  // namespace
-
-namespace {
-
-// The five passes, each with where its pipeline goes; the external one only where the sampler exists.
-struct CameraPass {
-    const char* label;
-    const char* file;
-    std::vector<std::string> defines, textures;
-    gpu::Pipeline CameraEnvironment::*out;
-};
-
-std::vector<CameraPass> camera_passes(const CameraEnvironment& env) {
+gpu::PipelineDesc camera_pass_desc(CameraPass pass) {
     const std::vector<std::string> planes{"u_plane0", "u_plane1"}, cube{"u_env", "u_camera"};
-    std::vector<CameraPass> passes{
-        {"camera convert (YUYV)",
-         "camera_convert.frag",
-         {"LAYOUT_YUYV"},
-         planes,
-         &CameraEnvironment::convert_yuyv},
-        {"camera convert (NV12)",
-         "camera_convert.frag",
-         {"LAYOUT_NV12"},
-         planes,
-         &CameraEnvironment::convert_nv12},
-        {"camera cube (planar)", "camera_cube.frag", {}, cube, &CameraEnvironment::cube_planar},
-        {"camera cube (mirror ball)",
-         "camera_cube.frag",
-         {"MAPPING_MIRROR_BALL"},
-         cube,
-         &CameraEnvironment::cube_mirror_ball},
-    };
-    if (env.support.external_sampler)
-        passes.push_back({"camera convert (external)",
-                          "camera_convert.frag",
-                          {"EXTERNAL_OES"},
-                          {"u_external"},
-                          &CameraEnvironment::convert_external});
-    return passes;
+    switch (pass) {
+        case CameraPass::convert_yuyv:
+            return {.label = "camera convert (YUYV)",
+                    .fragment = "camera_convert.frag",
+                    .defines = {"LAYOUT_YUYV"},
+                    .textures = planes};
+        case CameraPass::convert_nv12:
+            return {.label = "camera convert (NV12)",
+                    .fragment = "camera_convert.frag",
+                    .defines = {"LAYOUT_NV12"},
+                    .textures = planes};
+        case CameraPass::convert_external:
+            return {.label = "camera convert (external)",
+                    .fragment = "camera_convert.frag",
+                    .defines = {"EXTERNAL_OES"},
+                    .textures = {"u_external"}};
+        case CameraPass::cube_planar:
+            return {.label = "camera cube (planar)", .fragment = "camera_cube.frag", .textures = cube};
+        case CameraPass::cube_mirror_ball:
+            return {.label = "camera cube (mirror ball)",
+                    .fragment = "camera_cube.frag",
+                    .defines = {"MAPPING_MIRROR_BALL"},
+                    .textures = cube};
+    }
+    return {};
 }
 
-// Everything but the pipelines: parameter bindings, samplers and the cube.
+constexpr std::array all_camera_passes{CameraPass::convert_yuyv, CameraPass::convert_nv12,
+                                       CameraPass::convert_external, CameraPass::cube_planar,
+                                       CameraPass::cube_mirror_ball};
+
+// Every pass's pipeline is built before `ready`, so this is never null where the system draws.
+const render::BuiltPipeline& built(const CameraEnvironment& env, CameraPass pass) {
+    return *env.pipelines.find(pass);
+}
+
+// Everything but the pipelines: samplers and the cube.
 Result<void> finish_camera_resources(gpu::Device& device, CameraEnvironment& env) {
-    for (auto [pipeline, binding] : {std::pair{&env.cube_planar, &env.cube_planar_params},
-                                     std::pair{&env.cube_mirror_ball, &env.cube_mirror_ball_params}}) {
-        auto bound = render::bind_params(*pipeline);
-        if (!bound) return bound.error();
-        *binding = std::move(bound).value();
-    }
     env.nearest = device.create_sampler(
         {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
@@ -143,36 +134,23 @@ Result<void> finish_camera_resources(gpu::Device& device, CameraEnvironment& env
 }  // namespace
 
 std::optional<Result<void>> poll_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
-    if (env.built) return Result<void>{};
-    if (env.building.empty()) {  // the first call: ask for all of them
+    if (env.ready) return Result<void>{};
+    if (!env.support_probed) {
         env.support = device.external_image_support();
         env.zero_copy = env.support.dmabuf_import;
-        for (const CameraPass& pass : camera_passes(env))
-            env.building.push_back(device.request_pipeline({.label = pass.label,
-                                                            .fragment = pass.file,
-                                                            .defines = pass.defines,
-                                                            .textures = pass.textures}));
+        env.support_probed = true;
     }
-    const std::vector<CameraPass> passes = camera_passes(env);
     bool waiting = false;
-    for (std::size_t i = 0; i < passes.size(); ++i) {
-        if (!env.building[i].active()) continue;  // taken already
-        auto built = device.take_pipeline(env.building[i]);
-        if (!built) {
-            waiting = true;
-            continue;
-        }
-        if (!*built) {
-            env.building.clear();
-            env.built = true;  // not tried again: the same shaders fail the same way
-            return Result<void>(built->error());
-        }
-        env.*passes[i].out = std::move(*built).value();
+    for (const CameraPass pass : all_camera_passes) {
+        if (pass == CameraPass::convert_external && !env.support.external_sampler) continue;
+        auto polled = env.pipelines.poll(device, pass, [pass] { return camera_pass_desc(pass); });
+        if (!polled) return Result<void>(polled.error());
+        if (!*polled) waiting = true;
     }
     if (waiting) return std::nullopt;
-    env.building.clear();
-    env.built = true;
-    return finish_camera_resources(device, env);
+    if (auto made = finish_camera_resources(device, env); !made) return made;
+    env.ready = true;
+    return Result<void>{};
 }
 
 Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
@@ -256,7 +234,7 @@ void drop_camera_frames(CameraEnvironment& env) {
 
 void camera_environment_system(gpu::Device& device, const params::Params& params, const Environment& sky,
                                CameraEnvironment& env) {
-    if (env.failed || !env.built) return;
+    if (env.failed || !env.ready) return;
     if (env.convert_due) {
         env.convert_due = false;
         const camera::YuvToRgb m = camera::yuv_to_rgb(env.pending.matrix, env.pending.full_range);
@@ -265,12 +243,12 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
              .target = {.texture = &env.colour, .size = {env.colour.width(), env.colour.height()}},
              .load = gpu::LoadOp::DontCare});  // the conversion writes every texel
         if (env.pending_import) {
-            pass.set_pipeline(env.convert_external)
+            pass.set_pipeline(built(env, CameraPass::convert_external).pipeline)
                 .set_texture(0, env.pending_import->texture(), env.linear)
                 .set("u_size", glm::vec2(env.colour.width(), env.colour.height()));
         } else {
             const bool yuyv = env.layout == PixelLayout::Yuyv;
-            pass.set_pipeline(yuyv ? env.convert_yuyv : env.convert_nv12)
+            pass.set_pipeline(built(env, yuyv ? CameraPass::convert_yuyv : CameraPass::convert_nv12).pipeline)
                 .set_texture(0, env.plane0, env.nearest)
                 .set_texture(1, yuyv ? env.plane0 : env.plane1, env.nearest)
                 .set("u_yuv_matrix", m.matrix)
@@ -293,12 +271,14 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
         static_cast<float>(env.colour.width()) / static_cast<float>(std::max(env.colour.height(), 1));
     const render::ViewBasis view = render::view_basis(glm::vec3(0), glm::vec3(-1.0f, 0.7f, 0.0f),
                                                       params.get<ParamId::environment_camera_fov>(), aspect);
+    const render::BuiltPipeline& cube =
+        built(env, ball ? CameraPass::cube_mirror_ball : CameraPass::cube_planar);
     for (int face = 0; face < 6; ++face) {
         auto pass = device.begin_pass(
             {.label = "camera cube face",
              .target = {.texture = &env.cube, .size = {camera_cube_size, camera_cube_size}, .face = face},
              .load = gpu::LoadOp::DontCare});  // each face is drawn whole
-        pass.set_pipeline(ball ? env.cube_mirror_ball : env.cube_planar)
+        pass.set_pipeline(cube.pipeline)
             .set_texture(0, sky.cube, sky.sampler)
             .set_texture(1, env.colour, env.linear)
             .set("u_env_rgbm", sky.rgbm ? 1 : 0)
@@ -308,7 +288,7 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
             .set("u_up", view.up)
             .set("u_aspect", aspect)
             .set("u_tan_half_fov", view.scale.y);
-        render::set_param_uniforms(pass, ball ? env.cube_mirror_ball_params : env.cube_planar_params, params);
+        render::set_param_uniforms(pass, cube.params, params);
         pass.draw_fullscreen();
     }
     env.cube.generate_mipmaps();

@@ -11,7 +11,7 @@
 #include "camera/camera_image.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "render/param_uniforms.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/environment_system.hpp"
 #include "util/result.hpp"
 
@@ -19,20 +19,26 @@ namespace puddle::systems {
 
 inline constexpr int camera_cube_size = 256;  // per face: the reflection is blurred by ripples anyway
 
+// The camera's passes, each a variant of camera_convert.frag or camera_cube.frag; `convert_external` only
+// where the GPU samples external images.
+enum class CameraPass { convert_yuyv, convert_nv12, convert_external, cube_planar, cube_mirror_ball };
+using CameraPipelines = render::PipelineCache<CameraPass, 5, render::enum_index<CameraPass>>;
+
 // Resource.
 struct CameraEnvironment {
     gpu::Texture plane0, plane1;  // the copied frame: RGBA8 (YUYV pairs), or R8 + RG8 (NV12)
     gpu::Texture colour;          // the converted frame, sRGB, camera size, with mipmaps
     gpu::Texture cube;            // what the puddle reflects while the camera streams
     gpu::Sampler nearest, linear;
-    gpu::Pipeline convert_yuyv, convert_nv12, convert_external, cube_planar, cube_mirror_ball;
-    render::ParamBinding cube_planar_params, cube_mirror_ball_params;  // environment.camera_blend
-    std::vector<gpu::ExternalImage> imported;                          // per driver buffer (zero-copy path)
+    // Asked for at the first camera frame (most runs never need them), built off the frame thread; the
+    // cube passes read environment.camera_blend.
+    CameraPipelines pipelines;
+    std::vector<gpu::ExternalImage> imported;  // per driver buffer (zero-copy path)
     gpu::ExternalImageSupport support;
+    bool support_probed = false;
     bool zero_copy = false;  // dmabuf import available: use it for frames that carry a dmabuf
-    std::vector<gpu::PipelineRequest> building;  // the pipelines being built, off the frame thread
-    bool built = false;   // pipelines made, or failed (on first use: most runs never need them)
-    bool failed = false;  // a GPU error disabled the camera environment; the cubemap stays
+    bool ready = false;      // every pipeline built, the samplers and the cube made
+    bool failed = false;     // a GPU error disabled the camera environment; the cubemap stays
 
     camera::PixelLayout layout = camera::PixelLayout::Rgba;
     camera::CameraImage pending;  // the uploaded frame's description (data not kept)
@@ -46,9 +52,9 @@ struct CameraEnvironment {
     const gpu::Texture* reflection() const { return has_frame && !failed ? &cube : nullptr; }
 };
 
-// Asks for the pipelines on the first call and takes them as they are built (Device::request_pipeline:
+// Asks for the pipelines on the first call and takes them as they are built (the pipeline cache's poll:
 // off the frame thread where background compiles run); nothing while some are still building, then the
-// result once: an error (a shader that does not build) is not tried again.
+// result: an error (a shader that does not build) is returned once, and the cache never builds it again.
 std::optional<Result<void>> poll_camera_pipelines(gpu::Device& device, CameraEnvironment& env);
 // The same, waiting until they are built (tests and the benchmark).
 Result<void> build_camera_pipelines(gpu::Device& device, CameraEnvironment& env);

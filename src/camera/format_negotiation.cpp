@@ -10,13 +10,6 @@
 
 namespace puddle::camera {
 
-FormatPreference parse_format_preference(std::string_view name) {
-    if (name == "yuyv") return FormatPreference::Yuyv;
-    if (name == "nv12") return FormatPreference::Nv12;
-    if (name == "mjpeg") return FormatPreference::Mjpeg;
-    return FormatPreference::Auto;
-}
-
 std::string fourcc_name(std::uint32_t fourcc) {
     std::string s(4, ' ');
     for (int i = 0; i < 4; ++i) {

@@ -13,9 +13,9 @@
 
 namespace puddle::camera {
 
-// environment.camera_format: auto tries NV12, YUYV, then MJPEG (the YUV formats cost no CPU decode).
+// environment.camera_format (the camera system maps the parameter's enum): auto tries NV12, YUYV, then
+// MJPEG (the YUV formats cost no CPU decode).
 enum class FormatPreference { Auto, Yuyv, Nv12, Mjpeg };
-FormatPreference parse_format_preference(std::string_view name);
 
 struct OfferedFormat {
     std::uint32_t fourcc = 0;

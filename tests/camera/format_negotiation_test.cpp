@@ -55,8 +55,6 @@ TEST(FormatNegotiation, FourccNames) {
     EXPECT_EQ(fourcc_name(V4L2_PIX_FMT_YUYV), "YUYV");
     EXPECT_EQ(fourcc_name(V4L2_PIX_FMT_NV12), "NV12");
     EXPECT_EQ(fourcc_name(V4L2_PIX_FMT_MJPEG), "MJPG");
-    EXPECT_EQ(parse_format_preference("nv12"), FormatPreference::Nv12);
-    EXPECT_EQ(parse_format_preference("auto"), FormatPreference::Auto);
 }
 
 }  // namespace
