@@ -12,6 +12,8 @@
 #include <string>
 
 #include "assets/image.hpp"
+#include "assets/image_io.hpp"
+#include "assets/procedural.hpp"
 
 namespace puddle::test {
 
@@ -87,6 +89,18 @@ inline assets::Image city_lights_panorama(int width = 1024) {
         if (glm::dot(d, moon) > 0.9993f) return glm::vec3(30.0f, 29.0f, 26.0f);
         return sky;
     });
+}
+
+// The procedural night sky as six 8-bit sRGB faces (px.png ... nz.png) in `folder`, clipped at white: for
+// tests that compare two paths which would otherwise store the HDR sky differently (half floats against
+// RGBM, or the camera's 8-bit cube), so that only the path under test differs. Returns the folder.
+inline std::string write_ldr_night_sky(const std::string& folder, int face_size = 256) {
+    const assets::CubeImages sky = assets::night_sky_cubemap(face_size);
+    for (std::size_t f = 0; f < 6; ++f)
+        EXPECT_TRUE(assets::write_png(folder + "/" + assets::cube_face_names[f] + ".png",
+                                      assets::to_srgb8(sky.faces[f]))
+                        .ok());
+    return folder;
 }
 
 }  // namespace puddle::test
