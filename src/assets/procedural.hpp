@@ -15,4 +15,10 @@ namespace puddle::assets {
 // once with a fixed amount of work (O(face_size^2)); the faces render on six threads where there are any.
 CubeImages night_sky_cubemap(int face_size, std::uint64_t seed = 7);
 
+// The face size the procedural sky is made at when environment.face_size is 0 (sharp enough for a 1080p
+// screen: the puddle magnifies the reflected sky), and the most it is made at (six float faces of 1024
+// are 100 MB).
+inline constexpr int procedural_sky_face_size = 512;
+inline constexpr int procedural_sky_max_face_size = 1024;
+
 }  // namespace puddle::assets

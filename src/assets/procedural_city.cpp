@@ -155,13 +155,13 @@ Facade facade_in_slot(const CityView& v, int slot) {
     float top_deg = 10.0f + 34.0f * r * r;
     if (unit(hash(h, 46U)) < 0.12f) top_deg = 48.0f + 12.0f * unit(hash(h, 47U));  // a tower
     // The moon shows in a gap of the rooftops, framed by tall buildings on either side: the slot in front
-    // of it stays 10 degrees below it, its two neighbours each way rise well above it.
+    // of it stays 10 degrees below it, its four neighbours each way rise well above it.
     const float mid = (static_cast<float>(slot) + 0.5f) * kNearSlotDeg;
     float off = std::fabs(mid - v.moon_az_deg);
     off = std::min(off, 360.0f - off) / kNearSlotDeg;
     if (off < 0.5f)
         top_deg = std::min(top_deg, v.moon_el_deg - 10.0f);
-    else if (off < 2.5f)
+    else if (off < 4.5f)
         top_deg = std::max(top_deg, v.moon_el_deg + 8.0f + 14.0f * r);
     f.top_rad = top_deg * kDeg;
     return f;
@@ -240,9 +240,9 @@ Vec3 street(const CityView& v, Vec3 d, float glow) {
     // Wet: at grazing angles the street mirrors the glowing band over the city (Schlick-like rise).
     const float grazing = 1.0f - down;
     const float g2 = grazing * grazing;
-    c = c + v.band * (glow * 0.6f * g2 * g2 * grazing);
+    c = c + v.band * (glow * 0.35f * g2 * g2 * grazing);
     // Far away the street disappears into the haze.
-    return mix(c, v.haze * (1.2f * glow) + v.band * (0.3f * glow), smoothstep(40.0f, 200.0f, r));
+    return mix(c, v.haze * (0.8f * glow) + v.band * (0.12f * glow), smoothstep(40.0f, 200.0f, r));
 }
 
 }  // namespace
