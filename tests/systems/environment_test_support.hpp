@@ -103,4 +103,16 @@ inline std::string write_ldr_night_sky(const std::string& folder, int face_size 
     return folder;
 }
 
+// A smooth 8-bit sky written to `path` (PNG panorama): a dark blue zenith, a warm horizon, a grey street.
+// For tests of geometry (where the water meets a ray, how steep a ripple is) whose pixel differences
+// would otherwise depend on how sharp the night city's lit windows are. Returns the path.
+inline std::string write_smooth_sky(const std::string& path) {
+    const assets::Image sky = panorama_of(256, [](glm::vec3 d) {
+        if (d.y < 0.0f) return glm::vec3(0.10f, 0.08f, 0.06f);
+        return glm::mix(glm::vec3(0.30f, 0.20f, 0.15f), glm::vec3(0.02f, 0.03f, 0.08f), std::sqrt(d.y));
+    });
+    EXPECT_TRUE(assets::write_png(path, assets::to_srgb8(sky)).ok());
+    return path;
+}
+
 }  // namespace puddle::test
