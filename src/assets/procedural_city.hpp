@@ -1,7 +1,7 @@
 #pragma once
 // The city half of the procedural night sky (procedural.hpp): what stands between the viewer and the sky.
-// The viewer stands on a wet street, eye height 1 unit; around them a ring of near buildings (facades 7 to
-// 18 units away whose roofs reach 10 to 60 degrees up, with floors of lit windows and lit shop fronts at
+// The viewer stands on a wet street, eye height 1 unit; around them a ring of near buildings (facades 14 to
+// 34 units away whose roofs reach 10 to 60 degrees up, with floors of lit windows and lit shop fronts at
 // street level), behind those a far skyline, and below the horizon the paved street lit by lamp pools and
 // the city's glow, so that every direction below the horizon is lit (the steep sides of a drop's crater
 // reflect it). Linear radiance; windows, shop fronts, lamps and the moon reach past 1 (HDR). Internal to
