@@ -54,7 +54,8 @@ EnvironmentRequest EnvironmentRequest::from(const params::Params& params, const 
 }
 
 Result<PreparedEnvironment> prepare_environment(const EnvironmentRequest& request, std::stop_token stop) {
-    auto images = assets::load_environment_images(request.image);
+    auto images = assets::load_environment_images(
+        request.image, request.face_size > 0 ? request.face_size : assets::procedural_sky_face_size);
     if (!images) return images.error();
     if (stop.stop_requested()) return stopped(request);
     PreparedEnvironment out;

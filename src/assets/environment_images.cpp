@@ -1,5 +1,6 @@
 #include "assets/environment_images.hpp"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <system_error>
@@ -65,12 +66,12 @@ Result<EnvironmentImages> load_single_image(const std::string& path) {
 
 }  // namespace
 
-Result<EnvironmentImages> load_environment_images(const std::string& spec) {
+Result<EnvironmentImages> load_environment_images(const std::string& spec, int procedural_face_size) {
     EnvironmentImages env;
     Result<CubeImages> cube = CubeImages{};
     std::error_code ec;
     if (spec.empty()) {
-        cube = night_sky_cubemap(256);
+        cube = night_sky_cubemap(std::clamp(procedural_face_size, 1, procedural_sky_max_face_size));
     } else if (spec.find('|') != std::string::npos) {
         auto paths = split_six(spec);
         if (!paths) return paths.error();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "assets/image.hpp"
+#include "assets/procedural.hpp"
 #include "util/result.hpp"
 
 namespace puddle::assets {
@@ -22,7 +23,9 @@ struct EnvironmentImages {
     }
 };
 
-// Empty `spec`: the procedural night sky.
-Result<EnvironmentImages> load_environment_images(const std::string& spec);
+// Empty `spec`: the procedural night sky, made with faces of `procedural_face_size` (clamped to 1 to
+// procedural_sky_max_face_size).
+Result<EnvironmentImages> load_environment_images(const std::string& spec,
+                                                  int procedural_face_size = procedural_sky_face_size);
 
 }  // namespace puddle::assets

@@ -23,6 +23,7 @@
 // without it a pass would look as cheap as its API calls.
 
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
@@ -42,9 +43,12 @@ void register_all() {
     register_camera_benchmarks();
     register_pass_benchmarks();
     // Start-up cost of the procedural night sky (CPU), which a board pays once.
-    add_benchmark("startup/night_sky_cubemap/256", [](benchmark::State& st) {
-        for (auto _ : st) benchmark::DoNotOptimize(assets::night_sky_cubemap(256, 1));
-    });
+    add_benchmark(
+        fmt::format("startup/night_sky_cubemap/{}", assets::procedural_sky_face_size),
+        [](benchmark::State& st) {
+            for (auto _ : st)
+                benchmark::DoNotOptimize(assets::night_sky_cubemap(assets::procedural_sky_face_size, 1));
+        });
     register_look_benchmarks();
 }
 

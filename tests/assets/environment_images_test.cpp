@@ -46,8 +46,14 @@ TEST(EnvironmentImages, EmptyMeansTheProceduralSky) {
     auto env = load_environment_images("");
     ASSERT_TRUE(env.ok()) << env.error().message;
     ASSERT_TRUE(env->faces.has_value());
-    EXPECT_FALSE(env->hdr());
+    EXPECT_TRUE(env->hdr()) << "the night city's windows and moon are brighter than white";
     EXPECT_EQ(env->source, "procedural night sky");
+    EXPECT_EQ(env->faces->faces[0].width, procedural_sky_face_size);
+    // environment.face_size, when set, is the procedural sky's face size too.
+    auto small = load_environment_images("", 48);
+    ASSERT_TRUE(small.ok());
+    EXPECT_EQ(small->faces->faces[5].width, 48);
+    EXPECT_EQ(small->faces->faces[5].height, 48);
 }
 
 TEST(EnvironmentImages, TwoToOneImageIsAPanoramaAndHdrStaysLinear) {

@@ -54,7 +54,7 @@ TEST(ShaderCost, FollowsTheVariantsDefines) {
     EXPECT_EQ(estimate_shader_cost(source).texture_fetches, 1);
 }
 
-// The variant the default parameters select: checkerboard ground, no RGBM, the soft tone curve.
+// The variant the default parameters select: the paving (an image ground), no RGBM, the soft tone curve.
 TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     render::PuddleVariant v = render::choose_puddle_variant(params::Params{}, false);
     auto intersect = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
@@ -63,7 +63,7 @@ TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     ASSERT_TRUE(intersect.ok() && raymarch.ok());
     const ShaderCost i = estimate_shader_cost(intersect->source, 14),
                      r = estimate_shader_cost(raymarch->source, 14);
-    EXPECT_EQ(i.texture_fetches, 2);   // the surface once, the sky once (reflected or direct)
+    EXPECT_EQ(i.texture_fetches, 3);   // the surface once, the sky once (reflected or direct), the ground
     EXPECT_GT(r.texture_fetches, 14);  // a surface read per march step
     EXPECT_GT(r.alu_ops, i.alu_ops);
 }

@@ -27,6 +27,18 @@ TEST(Presets, AtLeastFiveDocumentedLooksThatAllLoad) {
             << e.name << " starts with a comment saying what it is";
 }
 
+// The default ground is the paving (issue 21); the reference's checkerboard look is one preset away.
+TEST(Presets, ReferenceBringsBackTheCheckerboard) {
+    EXPECT_FALSE(std::get<bool>(decl(ParamId::ground_checkerboard).default_value));
+    const Presets p = Presets::load({});
+    auto c = p.get("reference");
+    ASSERT_TRUE(c) << c.error().message;
+    bool checkerboard = false;
+    for (const ConfigEntry& e : c->entries)
+        if (e.id == ParamId::ground_checkerboard) checkerboard = std::get<bool>(e.value);
+    EXPECT_TRUE(checkerboard);
+}
+
 TEST(Presets, StepWrapsInNameOrder) {
     const Presets p = Presets::load({});
     const auto& n = p.names();

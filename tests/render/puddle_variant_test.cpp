@@ -28,17 +28,18 @@ bool has(const std::vector<std::string>& defines, const std::string& d) {
     return std::find(defines.begin(), defines.end(), d) != defines.end();
 }
 
+// The default look is the wet paving (an image ground); the reference preset brings back the checkerboard.
 TEST(PuddleVariant, DefaultsSelectTheCheapPath) {
     const PuddleVariant v = choose_puddle_variant(with({}), false);
     EXPECT_FALSE(v.raymarch);
-    EXPECT_EQ(v.ground, GroundKind::Checkerboard);
+    EXPECT_EQ(v.ground, GroundKind::Image);
     EXPECT_FALSE(v.env_rgbm);
     EXPECT_EQ(v.tonemap, params::Tonemap::soft);
 }
 
 TEST(PuddleVariant, EachParameterPicksItsVariant) {
     EXPECT_TRUE(choose_puddle_variant(with({"render.method=raymarch"}), false).raymarch);
-    EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=false"}), false).ground, GroundKind::Image);
+    EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=true"}), false).ground, GroundKind::Checkerboard);
     EXPECT_TRUE(choose_puddle_variant(with({}), true).env_rgbm);
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=aces"}), false).tonemap, params::Tonemap::aces);
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=clip"}), false).tonemap, params::Tonemap::clip);

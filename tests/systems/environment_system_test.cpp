@@ -69,9 +69,19 @@ TEST(EnvironmentSystem, HdrPicksHalfFloatOrForcedRgbmAndLdrStaysSrgb) {
     EXPECT_EQ(fallback->world().resource<systems::Environment>().cube.desc().format,
               gpu::TextureFormat::RGBA8);
     EXPECT_TRUE(fallback->world().resource<systems::Environment>().rgbm);
-    auto ldr = make_engine(make_params({}), {32, 32});
+    const std::string png = (dir / "sky.png").string();
+    ASSERT_TRUE(
+        assets::write_png(png, assets::to_srgb8(panorama_of(64, [](glm::vec3) { return glm::vec3(0.5f); })))
+            .ok());
+    auto ldr = make_engine(make_params({"environment.image=" + png}), {32, 32});
     ASSERT_TRUE(ldr);
     EXPECT_EQ(ldr->world().resource<systems::Environment>().cube.desc().format, gpu::TextureFormat::SRGB8_A8);
+    // The procedural night sky is HDR (its windows and moon are brighter than white): half floats here.
+    auto procedural = make_engine(make_params({}), {32, 32});
+    ASSERT_TRUE(procedural);
+    EXPECT_TRUE(procedural->world().resource<systems::Environment>().hdr);
+    EXPECT_EQ(procedural->world().resource<systems::Environment>().cube.desc().format,
+              gpu::TextureFormat::RGBA16F);
 }
 
 // The top rows of a picture: the sky seen directly, above the puddle.

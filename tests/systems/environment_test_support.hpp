@@ -12,6 +12,8 @@
 #include <string>
 
 #include "assets/image.hpp"
+#include "assets/image_io.hpp"
+#include "assets/procedural.hpp"
 
 namespace puddle::test {
 
@@ -87,6 +89,30 @@ inline assets::Image city_lights_panorama(int width = 1024) {
         if (glm::dot(d, moon) > 0.9993f) return glm::vec3(30.0f, 29.0f, 26.0f);
         return sky;
     });
+}
+
+// The procedural night sky as six 8-bit sRGB faces (px.png ... nz.png) in `folder`, clipped at white: for
+// tests that compare two paths which would otherwise store the HDR sky differently (half floats against
+// RGBM, or the camera's 8-bit cube), so that only the path under test differs. Returns the folder.
+inline std::string write_ldr_night_sky(const std::string& folder, int face_size = 256) {
+    const assets::CubeImages sky = assets::night_sky_cubemap(face_size);
+    for (std::size_t f = 0; f < 6; ++f)
+        EXPECT_TRUE(assets::write_png(folder + "/" + assets::cube_face_names[f] + ".png",
+                                      assets::to_srgb8(sky.faces[f]))
+                        .ok());
+    return folder;
+}
+
+// A smooth 8-bit sky written to `path` (PNG panorama): a dark blue zenith, a warm horizon, a grey street.
+// For tests of geometry (where the water meets a ray, how steep a ripple is) whose pixel differences
+// would otherwise depend on how sharp the night city's lit windows are. Returns the path.
+inline std::string write_smooth_sky(const std::string& path) {
+    const assets::Image sky = panorama_of(256, [](glm::vec3 d) {
+        if (d.y < 0.0f) return glm::vec3(0.10f, 0.08f, 0.06f);
+        return glm::mix(glm::vec3(0.30f, 0.20f, 0.15f), glm::vec3(0.02f, 0.03f, 0.08f), std::sqrt(d.y));
+    });
+    EXPECT_TRUE(assets::write_png(path, assets::to_srgb8(sky)).ok());
+    return path;
 }
 
 }  // namespace puddle::test
