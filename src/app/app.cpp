@@ -10,6 +10,7 @@
 
 #include "app/check.hpp"
 #include "app/cli.hpp"
+#include "app/display_power.hpp"
 #include "app/engine.hpp"
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
@@ -129,6 +130,7 @@ std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signal
         },
         [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
         systems::add_schedule,
+        add_display_power,
         systems::add_puddle_plugin,
     };
 }
