@@ -180,11 +180,64 @@ gpio_test() {
     say "SKIP gpio: kernel $(uname -r) has gpio-sim, but driving it is not written yet (tests/vm/guest.sh)"
 }
 
+# --- power: display.power off and on again on virtio-gpu (issue 19) ---------------------------------
+# Puddle runs on KMS with a config that the test rewrites: display.power = false must switch the
+# connector off (DPMS, so virtio-gpu's scanout goes inactive) and true must bring the same mode back with
+# the picture. The host takes screendumps before, while off and after, and compares their brightness.
+power_test() {
+    if ! wait_for /dev/dri/card0 50; then
+        say "FAIL power: no /dev/dri/card0 after loading the DRM driver"
+        return
+    fi
+    local config=$TMPDIR/power.toml fifo=$TMPDIR/puddle-power.log line pid rc step=0 shots=""
+    printf '[display]\npower = true\n' >"$config"
+    mkfifo "$fifo"
+    # shellcheck disable=SC2086
+    "$VM_PUDDLE" --backend kms --size "${VM_W}x${VM_H}" --frames 400 --fixed-step --fps-cap "$VM_FPS" \
+        --seed "$VM_SEED" $VM_PUDDLE_SETS --config "$config" --log-level debug >"$fifo" 2>&1 &
+    pid=$!
+    set_power() {  # a rename, as editors save: the config watcher reloads
+        printf '[display]\npower = %s\n' "$1" >"$config.new" && mv "$config.new" "$config"
+    }
+    while IFS= read -r line; do
+        echo "$line" >>"$out/power.log"
+        case $step in
+            0) if [[ $line == *"kms: frame 2 on screen"* ]]; then
+                   kill -STOP "$pid"; screendump power-before && shots+="before "; kill -CONT "$pid"
+                   set_power false; step=1
+               fi ;;
+            1) if [[ $line == *"output off (DPMS off)"* ]]; then
+                   sleep 2; screendump power-off && shots+="off "
+                   set_power true; step=2
+               fi ;;
+            2) [[ $line == *"output on (DPMS on)"* ]] && step=3 ;;
+            3) if [[ $line == *"kms: frame "*" on screen"* ]]; then
+                   kill -STOP "$pid"; screendump power-on && shots+="on "; kill -CONT "$pid"
+                   kill -TERM "$pid"; step=4
+               fi ;;
+        esac
+    done <"$fifo"
+    wait "$pid"
+    rc=$?
+    if [ "$rc" -ne 0 ]; then
+        say "FAIL power: puddle exited with $rc (log: power.log)"
+    elif [ "$step" -ne 4 ]; then
+        say "FAIL power: stopped at step $step of 4 (before, off, on, picture back); log: power.log"
+    elif [ "$shots" != "before off on " ]; then
+        say "FAIL power: screendumps taken: ${shots:-none}"
+    elif grep -q -E '^(warning|error): kms' "$out/power.log"; then
+        say "FAIL power: $(grep -m1 -E '^(warning|error): kms' "$out/power.log")"
+    else
+        say "PASS power: $(grep -m1 -o 'kms: [^ ]* [^ ]* output off (DPMS off)' "$out/power.log"), then on; the picture came back"
+    fi
+}
+
 for t in $VM_TESTS; do
     case $t in
         kms) kms_test ;;
         camera) camera_test ;;
         gpio) gpio_test ;;
+        power) power_test ;;
         *) say "FAIL $t: unknown test" ;;
     esac
 done
