@@ -89,9 +89,9 @@ EnvironmentBuild::EnvironmentBuild(PreparedEnvironment prepared, int fallback_fl
                             prepared_.rgbm, smallest_face_size_);
 }
 
-Result<bool> EnvironmentBuild::step(gpu::Device& device) {
+Result<bool> EnvironmentBuild::step(gpu::Device& device, render::EquirectPipelines& pipelines) {
     if (conversion_) {
-        auto done = conversion_->step(device, texels_per_step);
+        auto done = conversion_->step(device, texels_per_step, pipelines);
         if (done && *done) cube_ = conversion_->take_cube();
         return done;
     }

@@ -62,8 +62,9 @@ public:
     static constexpr int no_fallback = 1 << 30;
     EnvironmentBuild(PreparedEnvironment prepared, int fallback_floor);
     // Does the next step; true once the cube is complete. An error ends the build (ExitCode::GpuMemory
-    // for a cube that does not fit at any size allowed).
-    Result<bool> step(gpu::Device& device);
+    // for a cube that does not fit at any size allowed). A panorama is converted with `pipelines`' shader
+    // (built on first use, kept by the caller for later builds), which must outlive the build.
+    Result<bool> step(gpu::Device& device, render::EquirectPipelines& pipelines);
     // The finished environment (after step() returned true) into `env`; logs the line that says what is
     // shown. Leaves env's requested_* values as they are.
     void finish(gpu::Device& device, Environment& env);

@@ -69,7 +69,7 @@ void continue_environment_reload(gpu::Device& device, Environment& env, Environm
         reload.environment_build.emplace(std::move(prepared->value()), reload.fallback_floor);
     }
     if (!reload.environment_build) return;
-    auto done = reload.environment_build->step(device);
+    auto done = reload.environment_build->step(device, env.panorama_pipelines);
     if (!done) {
         spdlog::error("{} (keeping {})", done.error().message, env.source);
         reload.environment_build.reset();
@@ -86,11 +86,12 @@ Result<void> load_environment(gpu::Device& device, const params::Params& params,
     if (!prepared) return prepared.error();
     EnvironmentBuild build(std::move(prepared).value(), fallback_floor(env, params));
     for (;;) {
-        auto done = build.step(device);
+        auto done = build.step(device, env.panorama_pipelines);
         if (!done) return done.error();
         if (*done) break;
     }
     Environment e;
+    e.panorama_pipelines = std::move(env.panorama_pipelines);
     build.finish(device, e);
     e.requested_image = params.get<ParamId::environment_image>();
     e.requested_face_size = params.get<ParamId::environment_face_size>();

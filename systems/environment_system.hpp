@@ -30,6 +30,7 @@ struct Environment {
     std::string source;  // for logs
     bool rgbm = false;   // texels are RGBM RGBA8: the shader decodes them (colour.glsl)
     bool hdr = false;    // linear radiance beyond 1 is possible
+    render::EquirectPipelines panorama_pipelines;  // converting panoramas: compiled once, kept for reloads
     // The parameter values last asked for, loaded or not: a change triggers a reload, a failure is not
     // retried.
     std::string requested_image;

@@ -28,45 +28,37 @@ using params::Params;
 
 namespace {
 
-// The compiled passes of `from` (the step, its parameters, sampler and drop buffer; the surface pass)
-// handed to `to`, so that build_wave_field and build_surface keep them instead of compiling again.
+// The pipelines, sampler and drop buffer of `from` handed to `to`, so that build_wave_field and
+// build_surface keep them instead of making them again.
 void hand_over_passes(WaveField& from, WaveField& to) {
-    to.fixed_point = from.fixed_point;
-    to.step = std::move(from.step);
-    to.step_params = std::move(from.step_params);
+    to.step_pipelines = std::move(from.step_pipelines);
     to.nearest = std::move(from.nearest);
     to.drops = std::move(from.drops);
 }
 void hand_over_passes(Surface& from, Surface& to) {
-    to.unorm = from.unorm;
-    to.field_fixed_point = from.field_fixed_point;
-    to.pipeline = std::move(from.pipeline);
+    to.pipelines = std::move(from.pipelines);
+    to.field_sampler = std::move(from.field_sampler);
+    to.sampler = std::move(from.sampler);
 }
 
 bool wants_fixed_point(const gpu::Device& device, const Params& params) {
     return !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
 }
 
-// Both or neither: a surface that fails to build keeps the old field too (their sizes must match). When
-// the field's format stays, the compiled passes go with the new field and surface and come back on a
-// failure, so a new resolution compiles nothing (fresh ones compiled both shaders again on the frame
-// thread at every live edit).
+// Both or neither: a surface that fails to build keeps the old field too (their sizes must match). The
+// compiled passes go with the new field and surface and come back on a failure, so a new resolution
+// compiles nothing (fresh ones compiled both shaders again on the frame thread at every live edit).
 Result<void> build_field_and_surface(gpu::Device& device, const Params& params, WaveField& field,
                                      Surface& surface) {
     WaveField new_field;
     Surface new_surface;
-    const bool same_format = field.step.id() != 0 && field.fixed_point == wants_fixed_point(device, params);
-    if (same_format) {
-        hand_over_passes(field, new_field);
-        hand_over_passes(surface, new_surface);
-    }
-    auto built = build_wave_field(device, params, new_field);  // leaves new_field as it was on an error
-    if (built) built = build_surface(device, new_field, new_surface);  // and new_surface
+    hand_over_passes(field, new_field);
+    hand_over_passes(surface, new_surface);
+    auto built = build_wave_field(device, params, new_field);
+    if (built) built = build_surface(device, new_field, new_surface);
     if (!built) {
-        if (same_format) {
-            hand_over_passes(new_field, field);
-            hand_over_passes(new_surface, surface);
-        }
+        hand_over_passes(new_field, field);
+        hand_over_passes(new_surface, surface);
         return built;
     }
     field = std::move(new_field);

@@ -14,32 +14,33 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     const bool fixed_point = !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
     const gpu::TextureFormat format = fixed_point ? gpu::TextureFormat::RG32I : gpu::TextureFormat::RG32F;
     // A new resolution needs new textures only: compiling the step again on every rebuild grew the process
-    // by about 65 KiB each time on llvmpipe (puddle-soak, README "Soak"). The old field is taken from only
-    // once everything that can fail has worked, so a failed rebuild leaves it whole.
-    const bool reuse = field.step.id() != 0 && field.fixed_point == fixed_point;
-
+    // by about 65 KiB each time on llvmpipe (puddle-soak, README "Soak"), so the pipelines, the sampler and
+    // the drop buffer stay with `field`. The textures are replaced only once everything that can fail has
+    // worked, so a failed rebuild leaves the field whole.
     WaveField f;
     f.resolution = n;
     f.fixed_point = fixed_point;
-    if (!reuse) {
-        std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
-        if (fixed_point) defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
-        auto pipeline = device.create_pipeline({.label = "wave step",
-                                                .fragment = "wave_step.frag",
-                                                .defines = defines,
-                                                .textures = {"u_field"},
-                                                .uniform_blocks = {"Drops"}});
-        if (!pipeline) return pipeline.error();
-        auto binding = render::bind_params(*pipeline);
-        if (!binding) return binding.error();
-        f.step = std::move(pipeline).value();
-        f.step_params = std::move(binding).value();
+    if (auto built = field.step_pipelines.ensure(
+            device, f.encoding(),
+            [&] {
+                std::vector<std::string> defines{fmt::format("MAX_DROPS {}", max_drops)};
+                if (fixed_point)
+                    defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
+                return gpu::PipelineDesc{.label = "wave step",
+                                         .fragment = "wave_step.frag",
+                                         .defines = defines,
+                                         .textures = {"u_field"},
+                                         .uniform_blocks = {"Drops"}};
+            });
+        !built)
+        return built;
+    if (field.drops.id() == 0) {
         // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
-        f.nearest = device.create_sampler(
+        field.nearest = device.create_sampler(
             {.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
         auto drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
         if (!drops) return drops.error();
-        f.drops = std::move(drops).value();
+        field.drops = std::move(drops).value();
     }
     for (int i = 0; i < 2; ++i) {
         auto texture = device.create_texture({.label = fmt::format("wave field {}", i),
@@ -55,28 +56,27 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
                            .load = gpu::LoadOp::Clear,
                            .clear = {0, 0, 0, 0}});
     }
-    if (reuse) {
-        f.step = std::move(field.step);
-        f.step_params = std::move(field.step_params);
-        f.nearest = std::move(field.nearest);
-        f.drops = std::move(field.drops);
-    }
-    field = std::move(f);
+    field.textures = std::move(f.textures);
+    field.current = 0;
+    field.resolution = n;
+    field.fixed_point = fixed_point;
     return {};
 }
 
 void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops,
                  WaveField& field) {
+    const render::BuiltPipeline* step = field.step_pipelines.find(field.encoding());
+    if (!step) return;  // never: build_wave_field makes a field only with its pipeline built
     const auto next = static_cast<std::size_t>(1 - field.current);
     field.drops.write(std::as_bytes(std::span(drops.drops.data(), static_cast<std::size_t>(drops.count))));
     auto pass = device.begin_pass({.label = "wave step",
                                    .target = {&field.textures[next], {field.resolution, field.resolution}},
                                    .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(field.step)
+    pass.set_pipeline(step->pipeline)
         .set_texture(0, field.newest(), field.nearest)
         .set_uniform_buffer(0, field.drops)
         .set("u_drop_count", drops.count);
-    render::set_param_uniforms(pass, field.step_params, params);
+    render::set_param_uniforms(pass, step->params, params);
     pass.draw_fullscreen();
     field.current = static_cast<int>(next);
 }

@@ -8,7 +8,7 @@
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
-#include "render/param_uniforms.hpp"
+#include "render/pipeline_cache.hpp"
 #include "systems/drop_system.hpp"
 #include "util/result.hpp"
 
@@ -16,14 +16,19 @@ namespace puddle::systems {
 
 inline constexpr float fixed_point_scale = 65536.0f;  // RG32I fallback: 1/65536 height units per step
 
+// How the field's texels hold heights; each needs its own wave step (and surface) pipeline.
+enum class FieldEncoding { float_rg32f, fixed_point_rg32i };
+// The wave step's pipelines (render/pipeline_cache.hpp), one per encoding, each built the first time it is
+// used and kept through resolution changes: a new wave.resolution compiles nothing.
+using WaveStepPipelines = render::PipelineCache<FieldEncoding, 2, render::enum_index<FieldEncoding>>;
+
 // Resource.
 struct WaveField {
     std::array<gpu::Texture, 2> textures;
     int current = 0;  // index of the texture holding the newest step
     int resolution = 0;
     bool fixed_point = false;
-    gpu::Pipeline step;
-    render::ParamBinding step_params;  // wave.damping
+    WaveStepPipelines step_pipelines;  // the step reads wave.damping
     gpu::Sampler nearest;
     gpu::Buffer drops;  // std140 vec4[max_drops]
     // A field that could not be made: not retried every frame, only once the parameters change again.
@@ -33,13 +38,17 @@ struct WaveField {
         bool operator==(const Request&) const = default;
     } requested;
 
+    FieldEncoding encoding() const {
+        return fixed_point ? FieldEncoding::fixed_point_rg32i : FieldEncoding::float_rg32f;
+    }
     const gpu::Texture& newest() const { return textures[static_cast<std::size_t>(current)]; }
     // Height and previous height of every texel (fixed point converted back to height units), rows by z.
     std::vector<float> read_heights(gpu::Device& device) const;
 };
 
-// Makes (or remakes, when wave.resolution or wave.float_field changed) a flat field. On an error (a
-// texture the GPU cannot make: exit code GpuMemory when it does not fit) `field` is left as it was.
+// Makes (or remakes, when wave.resolution or wave.float_field changed) a flat field, keeping `field`'s
+// step pipelines, sampler and drop buffer. On an error (a texture the GPU cannot make: exit code GpuMemory
+// when it does not fit; a step shader that does not build) `field` is left as it was.
 Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field);
 
 // Simulate stage, once per fixed step: inject the live drops and advance the field one step.

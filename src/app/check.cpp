@@ -25,19 +25,20 @@ namespace puddle::app {
 namespace {
 
 struct Report {
+    std::FILE* out;
     int problems = 0;
     void section(std::string_view name) {
-        std::printf("\n[%.*s]\n", static_cast<int>(name.size()), name.data());
+        std::fprintf(out, "\n[%.*s]\n", static_cast<int>(name.size()), name.data());
     }
-    void ok(const std::string& text) { std::printf("  OK    %s\n", text.c_str()); }
+    void ok(const std::string& text) { std::fprintf(out, "  OK    %s\n", text.c_str()); }
     void absent(const std::string& text) {
-        std::printf("  --    %s\n", text.c_str());
+        std::fprintf(out, "  --    %s\n", text.c_str());
     }  // fine, just not here
     void fix(const std::string& text) {
-        std::printf("  FIX   %s\n", text.c_str());
+        std::fprintf(out, "  FIX   %s\n", text.c_str());
         ++problems;
     }
-    void note(const std::string& text) { std::printf("        %s\n", text.c_str()); }
+    void note(const std::string& text) { std::fprintf(out, "        %s\n", text.c_str()); }
 };
 
 std::string join(const std::vector<std::string>& items, std::size_t max) {
@@ -102,12 +103,32 @@ void check_saved_state(Report& r, const CliOptions& o) {
 
 }  // namespace
 
-int run_check(const CliOptions& o, const std::string& config_path) {
-    Report r;
+std::vector<GpuFeatureLine> gpu_feature_lines(const gpu::Capabilities& caps, bool dmabuf_import) {
+    std::vector<GpuFeatureLine> lines;
+    auto feature = [&](bool have, const char* what, const char* without) {
+        lines.push_back({have, have ? std::string(what) : fmt::format("{}: missing; {}", what, without)});
+    };
+    feature(caps.float_render_targets, "float render targets (wave field in RG32F)",
+            "the wave field runs in fixed point (RG32I), the same picture");
+    feature(caps.half_float_render_targets, "half-float render targets (HDR sky, surface)",
+            "HDR skies are stored as RGBM, the surface as RGBA8");
+    feature(caps.float_linear_filtering, "filtering of 32-bit float textures",
+            "not needed: Puddle never filters them");
+    feature(caps.timer_queries, "timer queries", "--stats and puddle-bench show CPU times only");
+    feature(caps.external_images, "external images (OES_EGL_image_external_essl3)",
+            "camera frames are copied");
+    feature(dmabuf_import, "dmabuf import (EGL_EXT_image_dma_buf_import)",
+            "camera frames are copied (glTexSubImage2D)");
+    feature(caps.anisotropic_filtering, "anisotropic filtering", "the ground is filtered trilinearly");
+    return lines;
+}
+
+int run_check(const CliOptions& o, const std::string& config_path, const CheckSources& sources) {
+    Report r{sources.out};
     int exit_code = 0;
     if (spdlog::get_level() < spdlog::level::warn)
         spdlog::set_level(spdlog::level::warn);  // the report is the output
-    std::printf("puddle %s --check\n", std::string(version()).c_str());
+    std::fprintf(r.out, "puddle %s --check\n", std::string(version()).c_str());
 
     r.section("config");
     std::vector<params::KnobSpec> knobs;
@@ -129,9 +150,10 @@ int run_check(const CliOptions& o, const std::string& config_path) {
     if (!knobs.empty()) check_saved_state(r, o);
 
     r.section("display: DRM/KMS (--backend kms)");
-    const auto cards = platform::list_drm_cards();
+    const auto cards = platform::list_drm_cards(sources.dri_folder);
     if (cards.empty())
-        r.absent("no /dev/dri/card*: no KMS screen here (the window and headless backends still work)");
+        r.absent(fmt::format("no {}/card*: no KMS screen here (the window and headless backends still work)",
+                             sources.dri_folder));
     for (const auto& card : cards) {
         switch (card.status) {
             case platform::DrmCardStatus::NoOutputs:  // a render-only GPU beside the display one: no fault
@@ -161,26 +183,13 @@ int run_check(const CliOptions& o, const std::string& config_path) {
             gpu::Device device;
             const auto& caps = device.caps();
             r.ok(fmt::format("{} / {} / {}", caps.vendor, caps.renderer, caps.version));
-            auto feature = [&](bool have, const char* what, const char* without) {
-                if (have)
-                    r.ok(what);
+            const bool dmabuf = platform::current_display_has_extension("EGL_EXT_image_dma_buf_import");
+            for (const GpuFeatureLine& line : gpu_feature_lines(caps, dmabuf)) {
+                if (line.present)
+                    r.ok(line.text);
                 else
-                    r.absent(fmt::format("{}: missing; {}", what, without));
-            };
-            feature(caps.float_render_targets, "float render targets (wave field in RG32F)",
-                    "the wave field runs in fixed point (RG32I), the same picture");
-            feature(caps.half_float_render_targets, "half-float render targets (HDR sky, surface)",
-                    "HDR skies are stored as RGBM, the surface as RGBA8");
-            feature(caps.float_linear_filtering, "filtering of 32-bit float textures",
-                    "not needed: Puddle never filters them");
-            feature(caps.timer_queries, "timer queries", "--stats and puddle-bench show CPU times only");
-            feature(caps.external_images, "external images (OES_EGL_image_external_essl3)",
-                    "camera frames are copied");
-            feature(platform::current_display_has_extension("EGL_EXT_image_dma_buf_import"),
-                    "dmabuf import (EGL_EXT_image_dma_buf_import)",
-                    "camera frames are copied (glTexSubImage2D)");
-            feature(caps.anisotropic_filtering, "anisotropic filtering",
-                    "the ground is filtered trilinearly");
+                    r.absent(line.text);
+            }
         }
     }
 
@@ -219,9 +228,11 @@ int run_check(const CliOptions& o, const std::string& config_path) {
     r.section("cameras (V4L2)");
     std::vector<std::string> videos;
     std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator("/dev", ec))
+    for (const auto& e : std::filesystem::directory_iterator(sources.video_folder, ec))
         if (e.path().filename().string().starts_with("video")) videos.push_back(e.path().string());
-    if (videos.empty()) r.absent("no /dev/video*: environment.source = \"camera\" would show the cubemap");
+    if (videos.empty())
+        r.absent(fmt::format("no {}/video*: environment.source = \"camera\" would show the cubemap",
+                             sources.video_folder));
     std::sort(videos.begin(), videos.end());
     for (const auto& v : videos) {
         auto offer = camera::device_offer(camera::system_v4l2_io(), v);
@@ -233,9 +244,9 @@ int run_check(const CliOptions& o, const std::string& config_path) {
             r.ok(fmt::format("{}: {}", v, camera::describe_offer(*offer)));
     }
 
-    std::printf("\n%s\n", r.problems == 0
-                              ? "Everything Puddle needs here is in order."
-                              : fmt::format("{} thing(s) to fix (FIX above).", r.problems).c_str());
+    std::fprintf(r.out, "\n%s\n",
+                 r.problems == 0 ? "Everything Puddle needs here is in order."
+                                 : fmt::format("{} thing(s) to fix (FIX above).", r.problems).c_str());
     return exit_code;
 }
 

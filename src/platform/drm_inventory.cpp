@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "platform/drm_names.hpp"
 #include "util/unique_fd.hpp"
 
 namespace puddle::platform {

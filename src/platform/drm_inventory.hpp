@@ -3,8 +3,6 @@
 // and for `puddle --check` each card, its connectors, their state and modes. Read-only: nothing is
 // set, so it is safe while another program owns the screen.
 
-#include <xf86drmMode.h>
-
 #include <string>
 #include <vector>
 
@@ -40,10 +38,5 @@ DrmCardInfo read_drm_card(int fd, std::string path);
 
 // Every card in `folder`, in drm_card_paths' order, each opened and read, then closed again.
 std::vector<DrmCardInfo> list_drm_cards(const std::string& folder = "/dev/dri");
-
-// "HDMI-A-1", "DP-2", "Virtual-1": the names the kernel and xrandr use, and display.connector takes.
-std::string connector_name(const drmModeConnector& c);
-// "1920x1080@60", as display.mode takes it.
-std::string mode_name(const drmModeModeInfo& m);
 
 }  // namespace puddle::platform

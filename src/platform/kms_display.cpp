@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -25,7 +24,9 @@
 
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
+#include "platform/drm_names.hpp"
 #include "platform/egl_context.hpp"
+#include "platform/kms_mode.hpp"
 #include "util/unique_fd.hpp"
 
 namespace puddle::platform {
@@ -66,11 +67,6 @@ std::vector<ConnectorPtr> get_connectors(int fd, const drmModeRes& res) {
     return connectors;
 }
 
-// A connector that can show a picture: connected, with at least one mode.
-bool is_connected(const drmModeConnector& c) {
-    return c.connection == DRM_MODE_CONNECTED && c.count_modes > 0;
-}
-
 // Master is what lets us modeset; the first opener gets it, otherwise it must be free to take.
 bool acquire_master(int fd) {
     return drmIsMaster(fd) || drmSetMaster(fd) == 0;
@@ -96,95 +92,15 @@ std::optional<std::string> check_card(const std::string& path, std::string& conn
     return std::nullopt;
 }
 
-struct ModeSpec {
-    int width = 0;
-    int height = 0;
-    int refresh = 0;  // 0: any
-};
-
-// "1920x1080" or "1920x1080@60".
-std::optional<ModeSpec> parse_mode(std::string_view text) {
-    ModeSpec spec;
-    const char* p = text.data();
-    const char* end = text.data() + text.size();
-    auto number = [&](int& out) {
-        const auto [next, err] = std::from_chars(p, end, out);
-        if (err != std::errc{} || out <= 0) return false;
-        p = next;
-        return true;
-    };
-    if (!number(spec.width) || p == end || *p++ != 'x' || !number(spec.height)) return std::nullopt;
-    if (p != end && (*p++ != '@' || !number(spec.refresh))) return std::nullopt;
-    if (p != end) return std::nullopt;
-    return spec;
-}
-
-bool matches(const drmModeModeInfo& m, const ModeSpec& spec) {
-    return m.hdisplay == spec.width && m.vdisplay == spec.height &&
-           (spec.refresh == 0 || static_cast<int>(m.vrefresh) == spec.refresh);
-}
-
-// The preferred mode among those that match, else the first that matches.
-const drmModeModeInfo* find_mode(const drmModeConnector& c, const std::optional<ModeSpec>& spec) {
-    const drmModeModeInfo* found = nullptr;
-    for (int i = 0; i < c.count_modes; ++i) {
-        const drmModeModeInfo& m = c.modes[i];
-        if (spec && !matches(m, *spec)) continue;
-        if (m.type & DRM_MODE_TYPE_PREFERRED) return &m;
-        if (!found) found = &m;
-    }
-    return found;
-}
-
-std::string list_modes(const drmModeConnector& c) {
-    std::vector<std::string> names;
-    for (int i = 0; i < c.count_modes; ++i) {
-        std::string name = mode_name(c.modes[i]);
-        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
-    }
-    return fmt::format("{}", fmt::join(names, ", "));
-}
-
-Result<drmModeModeInfo> pick_mode(const std::string& card, const drmModeConnector& c,
-                                  const DisplayOptions& options) {
-    const std::string name = connector_name(c);
-    if (!options.mode.empty()) {
-        const auto spec = parse_mode(options.mode);
-        if (!spec)
-            return make_error(ExitCode::Display, "kms: mode '{}' is not WIDTHxHEIGHT or WIDTHxHEIGHT@HZ",
-                              options.mode);
-        if (const auto* m = find_mode(c, spec)) return *m;
-        return make_error(ExitCode::Display, "kms: {}: {} has no mode {}; available: {}", card, name,
-                          options.mode, list_modes(c));
-    }
-    if (options.size.x > 0 && options.size.y > 0) {
-        if (const auto* m = find_mode(c, ModeSpec{options.size.x, options.size.y, 0})) return *m;
-        spdlog::warn("kms: {}: {} has no {}x{} mode, using its preferred one", card, name, options.size.x,
-                     options.size.y);
-    }
-    if (const auto* m = find_mode(c, std::nullopt)) return *m;
-    return make_error(ExitCode::Display, "kms: {}: {} reports no modes", card, name);
-}
-
-Result<ConnectorPtr> pick_connector(int fd, const std::string& card, const drmModeRes& res,
+// The card's connectors, in its order, for pick_connector (kms_mode.hpp).
+Result<ConnectorPtr> take_connector(int fd, const std::string& card, const drmModeRes& res,
                                     const std::string& wanted) {
     auto connectors = get_connectors(fd, res);
-    std::vector<std::string> listing;
-    for (auto& c : connectors) {
-        const std::string name = connector_name(*c);
-        if (wanted.empty() ? is_connected(*c) : name == wanted) {
-            if (!is_connected(*c))
-                return make_error(ExitCode::Display, "kms: {}: connector {} is not connected", card, name);
-            return std::move(c);
-        }
-        listing.push_back(fmt::format("{} ({})", name, is_connected(*c) ? "connected" : "disconnected"));
-    }
-    const std::string available = listing.empty() ? "none" : fmt::format("{}", fmt::join(listing, ", "));
-    if (wanted.empty())
-        return make_error(ExitCode::Display, "kms: {}: no connected connector; connectors: {}", card,
-                          available);
-    return make_error(ExitCode::Display, "kms: {}: no connector named {}; connectors: {}", card, wanted,
-                      available);
+    std::vector<const drmModeConnector*> views;
+    for (const auto& c : connectors) views.push_back(c.get());
+    auto chosen = pick_connector(views, card, wanted);
+    if (!chosen) return chosen.error();
+    return std::move(connectors[*chosen]);
 }
 
 // The CRTC already driving the connector, else the first one an encoder of the connector can use.
@@ -391,7 +307,7 @@ Result<std::unique_ptr<Display>> KmsDisplay::create(const DisplayOptions& option
     if (!acquire_master(drm))
         return make_error(ExitCode::Display, "kms: {}: drmSetMaster: {} (is a desktop running?)", card,
                           errno_text(errno));
-    auto connector = pick_connector(drm, card, *res, options.connector);
+    auto connector = take_connector(drm, card, *res, options.connector);
     if (!connector) return connector.error();
     auto mode = pick_mode(card, **connector, options);
     if (!mode) return mode.error();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <span>
+#include <thread>
 
 #include "render/banded_upload.hpp"
 
@@ -71,7 +72,7 @@ EquirectToCube::EquirectToCube(std::vector<assets::Image> levels, int face_size,
     panorama_mips_ = gpu::full_mip_count(panorama_width_);
 }
 
-Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
+Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget, EquirectPipelines& pipelines) {
     switch (phase_) {
         case Phase::Upload: {
             if (!panorama_) {  // a step of its own: the driver may clear a large texture's memory
@@ -102,16 +103,19 @@ Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
             return false;
         case Phase::Pipeline: {
             levels_.clear();
+            auto built = pipelines.poll(device, rgbm_ ? CubeEncoding::rgbm : CubeEncoding::plain, [this] {
+                std::vector<std::string> defines;
+                if (rgbm_) defines.emplace_back("OUTPUT_RGBM");
+                return gpu::PipelineDesc{.label = "equirect to cube",
+                                         .fragment = "equirect_to_cube.frag",
+                                         .defines = defines,
+                                         .textures = {"u_panorama"}};
+            });
+            if (!built) return built.error();
+            if (!*built) return false;  // still building, off the frame thread
+            pipeline_ = &(*built)->pipeline;
             sampler_ = device.create_sampler(
                 {.label = "environment panorama", .mipmaps = true, .wrap = gpu::Wrap::Repeat});
-            std::vector<std::string> defines;
-            if (rgbm_) defines.emplace_back("OUTPUT_RGBM");
-            auto pipeline = device.create_pipeline({.label = "equirect to cube",
-                                                    .fragment = "equirect_to_cube.frag",
-                                                    .defines = defines,
-                                                    .textures = {"u_panorama"}});
-            if (!pipeline) return pipeline.error();
-            pipeline_ = std::move(pipeline).value();
             phase_ = Phase::Cube;
             return false;
         }
@@ -136,7 +140,7 @@ Result<bool> EquirectToCube::step(gpu::Device& device, long texel_budget) {
                  .target = {.texture = &cube_, .size = {size, size}, .face = face_, .level = level_},
                  .load = whole ? gpu::LoadOp::DontCare : gpu::LoadOp::Load,
                  .rows = {row_, whole ? 0 : rows}});
-            pass.set_pipeline(pipeline_)
+            pass.set_pipeline(*pipeline_)
                 .set_texture(0, panorama_, sampler_)
                 .set("u_face", face_)
                 .set("u_face_size", static_cast<float>(size))
@@ -163,10 +167,12 @@ Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& 
                                       gpu::TextureFormat format, bool rgbm, int smallest_face_size) {
     EquirectToCube conversion(panorama_mip_chain(panorama, device.caps().max_texture_size), face_size, format,
                               rgbm, smallest_face_size);
+    EquirectPipelines pipelines;
     for (;;) {
-        auto done = conversion.step(device, static_cast<long>(face_size) * face_size);
+        auto done = conversion.step(device, static_cast<long>(face_size) * face_size, pipelines);
         if (!done) return done.error();
         if (*done) return conversion.take_cube();
+        std::this_thread::yield();  // while the pipeline builds on the compiler's thread
     }
 }
 

@@ -10,6 +10,7 @@
 
 #include "assets/image.hpp"
 #include "gpu/device.hpp"
+#include "render/pipeline_cache.hpp"
 #include "util/result.hpp"
 
 namespace puddle::render {
@@ -33,6 +34,12 @@ Result<gpu::Texture> create_environment_cube(gpu::Device& device, gpu::TextureFo
 std::vector<assets::Image> panorama_mip_chain(assets::Image panorama, int max_texture_size,
                                               std::stop_token stop = {});
 
+// What the conversion writes: linear or sRGB texels as they are, or RGBM (each its own shader).
+enum class CubeEncoding { plain, rgbm };
+// The conversion's pipelines, built (off the frame thread) the first time a panorama is converted to that
+// encoding and kept by the caller for later conversions: a sky reloaded at run time compiles nothing.
+using EquirectPipelines = PipelineCache<CubeEncoding, 2, enum_index<CubeEncoding>>;
+
 // The GPU half, on the frame thread, one bounded step at a time.
 class EquirectToCube {
 public:
@@ -44,11 +51,12 @@ public:
                    int smallest_face_size);
 
     // Does the next step: makes the panorama texture, uploads one band of rows of a panorama level, makes
-    // the panorama's mipmaps, builds the pipeline, makes the cube, or renders one band of rows of one
-    // face and level of the cube; a band is at most `texel_budget` texels.
+    // the panorama's mipmaps, checks on the pipeline (from `pipelines`; while it builds the step does
+    // nothing), makes the cube, or renders one band of rows of one face and level of the cube; a band is
+    // at most `texel_budget` texels.
     // True once the cube is complete; an error (the shader does not build, a texture does not fit in
     // GPU memory: ExitCode::GpuMemory) ends the conversion.
-    Result<bool> step(gpu::Device& device, long texel_budget);
+    Result<bool> step(gpu::Device& device, long texel_budget, EquirectPipelines& pipelines);
     gpu::Texture take_cube() { return std::move(cube_); }
 
 private:
@@ -62,14 +70,14 @@ private:
     Phase phase_ = Phase::Upload;
     gpu::Texture panorama_;
     gpu::Sampler sampler_;
-    gpu::Pipeline pipeline_;
+    const gpu::Pipeline* pipeline_ = nullptr;  // in the caller's EquirectPipelines
     gpu::Texture cube_;
     std::size_t uploaded_ = 0;            // panorama levels uploaded
     int upload_row_ = 0;                  // the next row of the level being uploaded
     int level_ = 0, face_ = 0, row_ = 0;  // the next band of the cube to render
 };
 
-// All of it at once (start-up and tests): the mip chain, then every step.
+// All of it at once (start-up and tests): the mip chain, then every step, with pipelines of its own.
 Result<gpu::Texture> equirect_to_cube(gpu::Device& device, const assets::Image& panorama, int face_size,
                                       gpu::TextureFormat format, bool rgbm, int smallest_face_size);
 

@@ -7,7 +7,8 @@
 // - in the frame loop `request` has it built off the frame thread (Device::request_pipeline) and says
 //   when it is ready, so the old picture stays on screen meanwhile;
 // - a failed build logs one line, once, and that key is never tried again (a shader that failed to
-//   compile fails the same way every frame);
+//   compile fails the same way every frame); `poll` returns that error instead, for passes that report it
+//   in their own words;
 // - `request_or_last` gives the pipeline of the key returned last while a new key builds or after it
 //   failed, so a knob that needs a new variant switches the picture in the frame it is ready.
 // Keys map to a fixed array of slots through a dense index: nothing is allocated in the steady state.
@@ -69,16 +70,26 @@ public:
     // that does not block. A failure is logged once, then null for good.
     template <class MakeDesc>
     const BuiltPipeline* request(gpu::Device& device, const Key& key, MakeDesc&& make_desc) {
-        Slot& slot = slot_of(key);
-        if (ready(slot)) return &slot.built;
-        if (slot.failed) return nullptr;
-        if (!slot.building.active()) slot.building = device.request_pipeline(make_desc());
-        auto built = device.take_pipeline(slot.building);
-        if (!built) return nullptr;  // the worker is still on it
-        if (auto kept = keep(slot, std::move(*built)); !kept) {
-            log_failure(kept.error());
+        if (slot_of(key).failed) return nullptr;
+        auto polled = poll(device, key, std::forward<MakeDesc>(make_desc));
+        if (!polled) {
+            log_failure(polled.error());
             return nullptr;
         }
+        return *polled;
+    }
+
+    // As request, for a caller that reports a failure in its own words: the error is returned, not logged,
+    // the one time the build fails, and "failed to build before" at every later call. Null while building.
+    template <class MakeDesc>
+    Result<const BuiltPipeline*> poll(gpu::Device& device, const Key& key, MakeDesc&& make_desc) {
+        Slot& slot = slot_of(key);
+        if (ready(slot)) return &slot.built;
+        if (slot.failed) return make_error(ExitCode::Runtime, "gpu: pipeline failed to build before");
+        if (!slot.building.active()) slot.building = device.request_pipeline(make_desc());
+        auto built = device.take_pipeline(slot.building);
+        if (!built) return static_cast<const BuiltPipeline*>(nullptr);  // the worker is still on it
+        if (auto kept = keep(slot, std::move(*built)); !kept) return kept.error();
         return &slot.built;
     }
 

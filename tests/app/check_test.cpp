@@ -1,18 +1,24 @@
-// `puddle --check`: the report line by line. What the machine has (DRM cards, cameras, the GPU's features)
-// is found here independently (the test lists /dev and probes a Device of its own) and each section must
-// say exactly that; GPIO runs on the mock backend so its lines are fixed. Knobs are checked against the
-// GPIO backend; an invalid config is the one thing that fails it.
+// `puddle --check`: the report line by line. The DRM and V4L2 sections read folders the test makes (card
+// and video nodes that are plain files or dangling links), so their lines are known from those inputs
+// whatever the machine has; the GPU section must name a Device probed here; GPIO runs on the mock backend.
+// Knobs are checked against the GPIO backend; an invalid config is the one thing that fails it. The
+// config and knob tests run the binary, the folder tests call run_check in this process.
+#include "app/check.hpp"
+
 #include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/cli.hpp"
 #include "app/version.hpp"
 #include "gpu/device.hpp"
 #include "platform/display.hpp"
@@ -44,17 +50,42 @@ std::map<std::string, std::vector<std::string>> sections(const std::string& outp
     return out;
 }
 
-// /dev entries whose names start with `prefix`, sorted.
-std::vector<std::string> dev_entries(const std::filesystem::path& dir, const std::string& prefix) {
-    std::vector<std::string> found;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-        if (e.path().filename().string().starts_with(prefix)) found.push_back(e.path().string());
-    std::sort(found.begin(), found.end());
-    return found;
+// run_check in this process, on folders of the test's own instead of /dev/dri and /dev, with the
+// report written to a temporary file and read back.
+CommandResult check_here(const std::vector<std::string>& args, const app::CheckSources& folders) {
+    std::vector<const char*> argv{"puddle", "--check"};
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    auto options = app::parse_command_line(static_cast<int>(argv.size()), argv.data());
+    EXPECT_TRUE(options.ok()) << (options.ok() ? "" : options.error().message);
+    if (!options) return {};
+    std::FILE* out = std::tmpfile();
+    app::CheckSources sources = folders;
+    sources.out = out;
+    const auto level = spdlog::get_level();
+    CommandResult result{app::run_check(*options, options->config_path, sources), ""};
+    spdlog::set_level(level);
+    std::rewind(out);
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, out)) > 0;) result.output.append(buffer, n);
+    std::fclose(out);
+    return result;
 }
 
-// What the GPU section must say: the capabilities of a Device made here, on the same driver.
+// A folder holding `files` (empty files; "name -> target" makes a symbolic link), for the DRM or V4L2 nodes.
+std::string node_folder(TempDir& dir, const std::string& name, const std::vector<std::string>& files) {
+    const std::filesystem::path folder = dir / name;
+    std::filesystem::create_directories(folder);
+    for (const std::string& f : files) {
+        if (const auto arrow = f.find(" -> "); arrow != std::string::npos)
+            std::filesystem::create_symlink(folder / f.substr(arrow + 4), folder / f.substr(0, arrow));
+        else
+            std::ofstream(folder / f) << "";
+    }
+    return folder.string();
+}
+
+// What the GPU section must say for a Device made here, on the same driver: its names, then each feature
+// in gpu_feature_lines' words (checked on their own in GpuFeatureLines.*), OK when present, "--" when not.
 std::vector<std::string> expected_gpu_lines() {
     auto display =
         platform::create_headless_display({.backend = platform::BackendKind::Headless, .size = {16, 16}});
@@ -63,75 +94,101 @@ std::vector<std::string> expected_gpu_lines() {
     const gpu::Device device;
     const gpu::Capabilities& c = device.caps();
     std::vector<std::string> lines{"  OK    " + c.vendor + " / " + c.renderer + " / " + c.version};
-    auto feature = [&](bool have, const std::string& what, const std::string& without) {
-        lines.push_back(have ? "  OK    " + what : "  --    " + what + ": missing; " + without);
-    };
-    feature(c.float_render_targets, "float render targets (wave field in RG32F)",
-            "the wave field runs in fixed point (RG32I), the same picture");
-    feature(c.half_float_render_targets, "half-float render targets (HDR sky, surface)",
-            "HDR skies are stored as RGBM, the surface as RGBA8");
-    feature(c.float_linear_filtering, "filtering of 32-bit float textures",
-            "not needed: Puddle never filters them");
-    feature(c.timer_queries, "timer queries", "--stats and puddle-bench show CPU times only");
-    feature(c.external_images, "external images (OES_EGL_image_external_essl3)", "camera frames are copied");
-    feature(platform::current_display_has_extension("EGL_EXT_image_dma_buf_import"),
-            "dmabuf import (EGL_EXT_image_dma_buf_import)", "camera frames are copied (glTexSubImage2D)");
-    feature(c.anisotropic_filtering, "anisotropic filtering", "the ground is filtered trilinearly");
+    for (const app::GpuFeatureLine& f :
+         app::gpu_feature_lines(c, platform::current_display_has_extension("EGL_EXT_image_dma_buf_import")))
+        lines.push_back((f.present ? "  OK    " : "  --    ") + f.text);
     return lines;
 }
 
-// Each of `paths` has a line of its own in `lines`: OK, FIX or absent ("--"), naming it first.
-void expect_each_named(const std::vector<std::string>& lines, const std::vector<std::string>& paths) {
-    for (const std::string& path : paths)
-        EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) {
-            return l.starts_with("  OK    " + path) || l.starts_with("  FIX   " + path) ||
-                   l.starts_with("  --    " + path);
-        })) << path;
-}
-
-TEST(Check, ReportsWhatThisMachineHasLineByLine) {
+// Card and video nodes that are not devices: a plain file (a card without KMS outputs, a node that is no
+// camera) and a dangling link (a node that vanished); other names are not looked at.
+TEST(Check, ReportsTheNodesItIsGivenLineByLine) {
     TempDir dir;
     const std::string cfg = dir.write("ok.toml", "[rain]\ndrop_count = 40\n[water]\nturbidity = 0.2\n");
-    const CommandResult o = check("--gpio mock: --config " + cfg);
-    EXPECT_EQ(o.exit_code, 0) << o.output;
+    const std::string dri = node_folder(dir, "dri", {"card0", "card1 -> gone", "renderD128", "by-path"});
+    const std::string dev = node_folder(dir, "dev", {"video0", "video1 -> gone", "v4l-subdev0", "vbi0"});
+    const CommandResult o =
+        check_here({"--gpio", "mock:", "--config", cfg}, {.dri_folder = dri, .video_folder = dev});
+    EXPECT_EQ(o.exit_code, 0) << "hardware problems are reported, not fatal:\n" << o.output;
     auto s = sections(o.output);
     EXPECT_EQ(s[""], std::vector<std::string>{"puddle " + std::string(app::version()) + " --check"})
         << o.output;
     EXPECT_EQ(s["[config]"], std::vector<std::string>{"  OK    " + cfg + ": valid (2 values, 0 knobs)"});
-
-    const std::vector<std::string> cards = dev_entries("/dev/dri", "card");
-    const auto& drm = s["[display: DRM/KMS (--backend kms)]"];
-    if (cards.empty())
-        EXPECT_EQ(drm,
-                  std::vector<std::string>{"  --    no /dev/dri/card*: no KMS screen here (the window and "
-                                           "headless backends still work)"});
-    else
-        expect_each_named(drm, cards);
-
+    EXPECT_EQ(s["[display: DRM/KMS (--backend kms)]"],
+              (std::vector<std::string>{"  --    " + dri + "/card0: no display outputs (a render-only GPU)",
+                                        "  FIX   " + dri + "/card1: cannot open: No such file or directory"}))
+        << o.output;
     EXPECT_EQ(s["[GPU: EGL and OpenGL ES]"], expected_gpu_lines());
     EXPECT_EQ(s["[GPIO knobs (libgpiod)]"],
               (std::vector<std::string>{"  OK    gpiochip0 \"mock-gpio\", 64 lines",
                                         "  --    no [[knob]] in the config"}));
-
-    const std::vector<std::string> videos = dev_entries("/dev", "video");
     const auto& cameras = s["[cameras (V4L2)]"];
-    if (videos.empty())
-        EXPECT_EQ(cameras,
-                  std::vector<std::string>{"  --    no /dev/video*: environment.source = \"camera\" would "
-                                           "show the cubemap"});
-    else
-        expect_each_named(cameras, videos);
-
-    // The last line counts the FIX lines above it.
-    long fix_lines = 0;
-    for (const auto& [name, lines] : s)
-        fix_lines += std::count_if(lines.begin(), lines.end(),
-                                   [](const std::string& l) { return l.starts_with("  FIX   "); });
-    EXPECT_TRUE(has(o.output, fix_lines == 0
-                                  ? "\nEverything Puddle needs here is in order.\n"
-                                  : "\n" + std::to_string(fix_lines) + " thing(s) to fix (FIX above).\n"))
-        << o.output;
+    ASSERT_EQ(cameras.size(), 2u) << o.output;
+    EXPECT_EQ(cameras[0], "  --    " + dev + "/video0: offers no capture formats (not a camera?)");
+    EXPECT_EQ(cameras[1], "  FIX   " + dev + "/video1: cannot open: No such file or directory");
+    EXPECT_TRUE(has(o.output, "\n2 thing(s) to fix (FIX above).\n")) << o.output;
     EXPECT_FALSE(has(o.output, "info:")) << "the report is the output, not the log:\n" << o.output;
+}
+
+TEST(Check, FoldersWithoutNodesSayThereIsNoScreenAndNoCamera) {
+    TempDir dir;
+    const std::string dri = node_folder(dir, "dri", {"renderD128"});
+    const std::string dev = node_folder(dir, "dev", {});
+    const CommandResult o = check_here({"--gpio", "mock:"}, {.dri_folder = dri, .video_folder = dev});
+    auto s = sections(o.output);
+    EXPECT_EQ(
+        s["[display: DRM/KMS (--backend kms)]"],
+        std::vector<std::string>{"  --    no " + dri +
+                                 "/card*: no KMS screen here (the window and headless backends still work)"})
+        << o.output;
+    EXPECT_EQ(s["[cameras (V4L2)]"],
+              std::vector<std::string>{"  --    no " + dev +
+                                       "/video*: environment.source = \"camera\" would show the cubemap"})
+        << o.output;
+}
+
+// The words of each GPU feature line, with every feature present and with none.
+TEST(GpuFeatureLines, NameEachFeatureAndWhatPuddleDoesWithoutIt) {
+    gpu::Capabilities all;
+    all.float_render_targets = all.half_float_render_targets = all.float_linear_filtering = true;
+    all.timer_queries = all.external_images = all.anisotropic_filtering = true;
+    std::vector<std::string> present;
+    for (const app::GpuFeatureLine& f : app::gpu_feature_lines(all, true)) {
+        EXPECT_TRUE(f.present) << f.text;
+        present.push_back(f.text);
+    }
+    EXPECT_EQ(present, (std::vector<std::string>{
+                           "float render targets (wave field in RG32F)",
+                           "half-float render targets (HDR sky, surface)",
+                           "filtering of 32-bit float textures",
+                           "timer queries",
+                           "external images (OES_EGL_image_external_essl3)",
+                           "dmabuf import (EGL_EXT_image_dma_buf_import)",
+                           "anisotropic filtering",
+                       }));
+    std::vector<std::string> missing;
+    for (const app::GpuFeatureLine& f : app::gpu_feature_lines(gpu::Capabilities{}, false)) {
+        EXPECT_FALSE(f.present) << f.text;
+        missing.push_back(f.text);
+    }
+    EXPECT_EQ(missing,
+              (std::vector<std::string>{
+                  "float render targets (wave field in RG32F): missing; the wave field runs in fixed point "
+                  "(RG32I), the same picture",
+                  "half-float render targets (HDR sky, surface): missing; HDR skies are stored as RGBM, the "
+                  "surface as RGBA8",
+                  "filtering of 32-bit float textures: missing; not needed: Puddle never filters them",
+                  "timer queries: missing; --stats and puddle-bench show CPU times only",
+                  "external images (OES_EGL_image_external_essl3): missing; camera frames are copied",
+                  "dmabuf import (EGL_EXT_image_dma_buf_import): missing; camera frames are copied "
+                  "(glTexSubImage2D)",
+                  "anisotropic filtering: missing; the ground is filtered trilinearly",
+              }));
+    // Each flag drives its own line: only the timer queries missing.
+    gpu::Capabilities no_timer = all;
+    no_timer.timer_queries = false;
+    const auto lines = app::gpu_feature_lines(no_timer, true);
+    for (std::size_t i = 0; i < lines.size(); ++i) EXPECT_EQ(lines[i].present, i != 3) << lines[i].text;
 }
 
 // Without --config the default path is used when it exists, and its absence is said (not an error).

@@ -1,6 +1,6 @@
 // Render passes (gpu/render_pass.hpp) on a real context: what each load operation leaves in the target,
 // that a row band draws only its rows and leaves later passes whole, that the store and load hints raise no
-// GL error, and that uniforms set through the pass reach the shader.
+// GL error, that DontCare runs no clear, and that uniforms set through the pass reach the shader.
 #include "gpu/render_pass.hpp"
 
 #include <gtest/gtest.h>
@@ -110,6 +110,30 @@ TEST_F(RenderPassTest, DontCareAndDiscardOnATextureRaiseNoGlError) {
     // The hints leave the target usable: a later pass renders into it as before.
     device_->begin_pass({.label = "clear", .target = {&t, {8, 4}}, .load = LoadOp::Clear, .clear = blue});
     EXPECT_EQ(read_texels(*device_, t), all(blue8, 32));
+}
+
+// DontCare tells the driver that the old contents need not be kept, and must not cost a clear (a full
+// write of the target). What the target holds afterwards is undefined, so the observable is what it does
+// not hold: the pass's clear colour, in any texel. (On llvmpipe, where invalidation is a no-op, the red
+// stays.) Were DontCare run as a clear, every texel would be blue.
+TEST_F(RenderPassTest, DontCareDoesNotClear) {
+    Texture t = test::make_target(*device_, {8, 4}, red);
+    device_->begin_pass(
+        {.label = "dont care", .target = {&t, {8, 4}}, .load = LoadOp::DontCare, .clear = blue});
+    for (const glm::u8vec4 texel : read_texels(*device_, t)) EXPECT_NE(texel, blue8);
+    EXPECT_EQ(device_->take_errors(), "");
+}
+
+// Framebuffer 0 takes GL_COLOR, not GL_COLOR_ATTACHMENT0, for the same hints (GLES 3.0 section 4.5; the
+// headless context has no surface, so framebuffer 0 is GL's incomplete default one, which still checks
+// the attachment names): the other name raises GL_INVALID_ENUM.
+TEST_F(RenderPassTest, DontCareAndDiscardOnFramebufferZeroRaiseNoGlError) {
+    ASSERT_EQ(device_->take_errors(), "");
+    device_->begin_pass({.label = "surface",
+                         .target = {nullptr, {64, 32}},
+                         .load = LoadOp::DontCare,
+                         .store = StoreOp::Discard});
+    EXPECT_EQ(device_->take_errors(), "");
 }
 
 // Uniforms by name and by looked-up location reach the shader: u_screen_size scales the lookup (twice the

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "platform/drm_names.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::platform {

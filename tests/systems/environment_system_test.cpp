@@ -156,6 +156,29 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     EXPECT_EQ(engine->world().resource<systems::Environment>().cube.width(), 12);
 }
 
+// A panorama reloaded at run time is converted with the shader the first one compiled (the pipeline stays in
+// the Environment resource): a sky edit compiles nothing on the frame thread. Program names only grow on
+// Mesa, so a program compiled again would have a new one.
+TEST(EnvironmentSystem, ASecondPanoramaIsConvertedWithoutCompilingAgain) {
+    TempDir dir;
+    const std::string first = (dir / "first.exr").string(), second = (dir / "second.exr").string();
+    write_float_image(first, panorama_of(64, [](glm::vec3) { return glm::vec3(1.0f); }));
+    write_float_image(second, panorama_of(64, [](glm::vec3) { return glm::vec3(0.25f, 0.5f, 2.0f); }));
+    auto engine = make_engine(make_params({"environment.image=" + first}), {32, 32});
+    ASSERT_TRUE(engine);
+    const auto& env = engine->world().resource<systems::Environment>();
+    const auto encoding = env.rgbm ? render::CubeEncoding::rgbm : render::CubeEncoding::plain;
+    const render::BuiltPipeline* converted = env.panorama_pipelines.find(encoding);
+    ASSERT_NE(converted, nullptr) << "the start-up conversion keeps its pipeline";
+    const unsigned program = converted->pipeline.id();
+
+    ASSERT_TRUE(engine->params().set(ParamId::environment_image, second, ParamSource::CommandLine));
+    (void)render_until_reloaded(*engine);
+    ASSERT_EQ(env.source, second);
+    ASSERT_NE(env.panorama_pipelines.find(encoding), nullptr);
+    EXPECT_EQ(env.panorama_pipelines.find(encoding)->pipeline.id(), program);
+}
+
 // ../shared/assets: the Poly Haven HDRI, the cube folder, the paving photo and a 16-bit PNG render.
 TEST(EnvironmentSystemShared, RealFilesLoadAndRender) {
     const std::string assets = shared_assets_dir();

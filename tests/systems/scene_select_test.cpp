@@ -87,5 +87,49 @@ TEST(RunConditions, ReadTheLookOnScreenAndTheOverlaySwitch) {
     EXPECT_TRUE(overlay.test(world));
 }
 
+// The wave field runs for the puddle's pulse drops only: another scene needs none, whatever drops.model
+// says; each scene's condition holds for that scene alone.
+TEST(RunConditions, TheWaveFieldAndEachSceneByTheLookOnScreen) {
+    ecs::World world;
+    auto& shown = world.insert_resource<ShownLook>();
+    const auto field = wave_field_in_use(), analytic = drops_are(DropModel::analytic);
+    for (const Scene scene : {Scene::puddle, Scene::ocean, Scene::street}) {
+        shown = {.scene = scene, .drops = DropModel::pulse};
+        EXPECT_EQ(field.test(world), scene == Scene::puddle) << params::choice_name(scene);
+        for (const Scene other : {Scene::puddle, Scene::ocean, Scene::street})
+            EXPECT_EQ(look_is(other).test(world), other == scene)
+                << params::choice_name(other) << " on " << params::choice_name(scene);
+    }
+    shown = {.scene = Scene::puddle, .drops = DropModel::analytic};
+    EXPECT_TRUE(analytic.test(world));
+    EXPECT_FALSE(field.test(world));
+    EXPECT_EQ(look_is(Scene::puddle).name, "look is puddle");
+    EXPECT_EQ(drops_are(DropModel::pulse).name, "drops are pulse");
+}
+
+// The look the parameters choose (scene.kind, drops.model), and its name in the log.
+TEST(SceneSelect, TheSelectedLookIsWhatTheParametersSay) {
+    params::Params params;
+    params.set<params::ParamId::scene_kind>(Scene::street, params::ParamSource::CommandLine);
+    params.set<params::ParamId::drops_model>(DropModel::grid, params::ParamSource::CommandLine);
+    EXPECT_EQ(selected_scene(params), Scene::street);
+    EXPECT_EQ(selected_drop_model(params), DropModel::grid);
+    EXPECT_EQ(selected_look(params), (ShownLook{.scene = Scene::street, .drops = DropModel::grid}));
+    params.set<params::ParamId::scene_kind>(Scene::puddle, params::ParamSource::CommandLine);
+    params.set<params::ParamId::drops_model>(DropModel::analytic, params::ParamSource::CommandLine);
+    EXPECT_EQ(selected_look(params), (ShownLook{.scene = Scene::puddle, .drops = DropModel::analytic}));
+}
+
+TEST(SceneSelect, DescribeNamesTheSceneAndThePuddlesDrops) {
+    EXPECT_EQ(describe({.scene = Scene::puddle, .drops = DropModel::pulse}), "puddle with pulse drops");
+    EXPECT_EQ(describe({.scene = Scene::puddle, .drops = DropModel::analytic}), "puddle with analytic drops");
+    EXPECT_EQ(describe({.scene = Scene::puddle, .drops = DropModel::grid}), "puddle with grid drops");
+    for (const DropModel drops : {DropModel::pulse, DropModel::analytic, DropModel::grid}) {
+        EXPECT_EQ(describe({.scene = Scene::ocean, .drops = drops}), "ocean")
+            << "drops are the puddle's only";
+        EXPECT_EQ(describe({.scene = Scene::street, .drops = drops}), "street");
+    }
+}
+
 }  // namespace
 }  // namespace puddle::systems

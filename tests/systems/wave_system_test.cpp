@@ -34,6 +34,17 @@ TEST(WaveSystem, ImpulseSpreadsAsARingAtTheSchemeSpeed) {
     EXPECT_GT(r20, 8.0);
 }
 
+namespace {
+unsigned step_program_of(const systems::WaveField& field) {
+    const render::BuiltPipeline* p = field.step_pipelines.find(field.encoding());
+    return p ? p->pipeline.id() : 0;
+}
+unsigned surface_program_of(const systems::Surface& surface) {
+    const render::BuiltPipeline* p = surface.pipelines.find(surface.variant());
+    return p ? p->pipeline.id() : 0;
+}
+}  // namespace
+
 // A new wave.resolution remakes the textures but keeps the compiled step and surface shaders: compiling
 // them again on every rebuild grew resident memory by about 65 KiB a time on llvmpipe (puddle-soak).
 TEST(WaveSystem, NewResolutionKeepsTheCompiledPipelinesAndGivesAFlatFieldOfTheNewSize) {
@@ -41,13 +52,13 @@ TEST(WaveSystem, NewResolutionKeepsTheCompiledPipelinesAndGivesAFlatFieldOfTheNe
     ASSERT_TRUE(e);
     auto& field = e->world().resource<systems::WaveField>();
     auto& surface = e->world().resource<systems::Surface>();
-    const unsigned step_program = field.step.id(), surface_program = surface.pipeline.id();
+    const unsigned step_program = step_program_of(field), surface_program = surface_program_of(surface);
     step(*e, {{C, C, 1.0f}});
     auto params = make_params({"wave.resolution=96"});
     ASSERT_TRUE(systems::build_wave_field(e->device(), params, field));
     ASSERT_TRUE(systems::build_surface(e->device(), field, surface));
-    EXPECT_EQ(field.step.id(), step_program);
-    EXPECT_EQ(surface.pipeline.id(), surface_program);
+    EXPECT_EQ(step_program_of(field), step_program);
+    EXPECT_EQ(surface_program_of(surface), surface_program);
     const Field f = read_field(*e);
     ASSERT_EQ(f.n, 96);
     EXPECT_EQ(std::count(f.hv.begin(), f.hv.end(), 0.0f), 96 * 96 * 2) << "the new field starts flat";
@@ -61,14 +72,37 @@ TEST(WaveSystem, ALiveResolutionEditKeepsTheCompiledPipelines) {
     render_frames(*e, 2);
     const auto& field = e->world().resource<systems::WaveField>();
     const auto& surface = e->world().resource<systems::Surface>();
-    const unsigned step_program = field.step.id(), surface_program = surface.pipeline.id();
+    const unsigned step_program = step_program_of(field), surface_program = surface_program_of(surface);
     ASSERT_NE(step_program, 0u);
     e->params().set(params::ParamId::wave_resolution, 96, params::ParamSource::CommandLine);
     render_frames(*e, 1);
     ASSERT_EQ(field.resolution, 96);
     ASSERT_EQ(surface.resolution, 96);
-    EXPECT_EQ(field.step.id(), step_program);
-    EXPECT_EQ(surface.pipeline.id(), surface_program);
+    EXPECT_EQ(step_program_of(field), step_program);
+    EXPECT_EQ(surface_program_of(surface), surface_program);
+}
+
+// The field's encoding switched (wave.float_field) and back: each encoding's shaders are compiled once, so
+// the way back compiles nothing (before the pipeline cache, every switch compiled both shaders again).
+TEST(WaveSystem, SwitchingTheFieldEncodingAndBackCompilesEachEncodingOnce) {
+    auto e = quiet_engine(0.99f);
+    ASSERT_TRUE(e);
+    if (!e->device().caps().float_render_targets) GTEST_SKIP() << "this GPU has the fixed-point field only";
+    render_frames(*e, 1);
+    const auto& field = e->world().resource<systems::WaveField>();
+    const auto& surface = e->world().resource<systems::Surface>();
+    const bool started_fixed = field.fixed_point;
+    const unsigned step_program = step_program_of(field), surface_program = surface_program_of(surface);
+    ASSERT_NE(step_program, 0u);
+    e->params().set(params::ParamId::wave_float_field, started_fixed, params::ParamSource::CommandLine);
+    render_frames(*e, 1);
+    ASSERT_NE(field.fixed_point, started_fixed);
+    EXPECT_NE(step_program_of(field), step_program) << "the other encoding has its own step shader";
+    e->params().set(params::ParamId::wave_float_field, !started_fixed, params::ParamSource::CommandLine);
+    render_frames(*e, 1);
+    ASSERT_EQ(field.fixed_point, started_fixed);
+    EXPECT_EQ(step_program_of(field), step_program);
+    EXPECT_EQ(surface_program_of(surface), surface_program);
 }
 
 TEST(WaveSystem, RingStaysSymmetric) {
