@@ -25,6 +25,14 @@ void frame_clock_system(const ecs::FrameTime& time, const params::Params& params
     clock.steps_due = due;
 }
 
+void hold_steps_while_off(const OutputPower& power, FrameClock& clock) {
+    if (power.on || clock.steps_due == 0) return;
+    clock.step_index += static_cast<std::uint64_t>(clock.steps_due);
+    clock.sim_time =
+        clock.epoch_time + static_cast<double>(clock.step_index - clock.epoch_step) * clock.step_seconds;
+    clock.steps_due = 0;
+}
+
 void begin_step_system(FrameClock& clock) {
     ++clock.step_index;
     clock.sim_time =

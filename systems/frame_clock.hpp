@@ -6,6 +6,7 @@
 
 #include "ecs/frame_time.hpp"
 #include "params/param_store.hpp"
+#include "systems/output_power.hpp"
 
 namespace puddle::systems {
 
@@ -25,6 +26,10 @@ struct FrameClock {
 
 // Input stage: turns this frame's time into steps_due at wave.steps_per_second.
 void frame_clock_system(const ecs::FrameTime& time, const params::Params& params, FrameClock& clock);
+// Input stage, after frame_clock_system: while the output is off the due steps are counted as done
+// without running (no GPU work), so sim_time keeps up with the clock and the picture comes back at the
+// current time, not where it stopped.
+void hold_steps_while_off(const OutputPower& power, FrameClock& clock);
 // First simulate-stage system: advances sim_time by one step.
 void begin_step_system(FrameClock& clock);
 

@@ -148,6 +148,7 @@ bool reload_config(LiveTuning& t) {
         return false;
     }
     if (knobs_changed) make_knobs(t);
+    ++t.config_generation;
     t.layers_changed = true;
     t.change_reason = "config: reloaded";
     return true;
@@ -184,10 +185,14 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
 
     if (!t.layers_changed) return;
     t.layers_changed = false;
+    apply_layers(t, params, t.change_reason);
+}
+
+void apply_layers(LiveTuning& t, params::Params& params, std::string_view reason) {
     const params::Params next = t.layers.compose();
     const std::string changes = describe_changes(params, next);
     params.replace_with(next);
-    spdlog::info("{}: {}", t.change_reason, changes);
+    spdlog::info("{}: {}", reason, changes);
 }
 
 void start_state_save(LiveTuning& t) {

@@ -3,12 +3,14 @@
 // the config when the file changes (inotify) or on SIGHUP, turns knob events into parameter changes,
 // saves the knob state a few seconds after the last turn (on a worker thread: an SD card can take
 // seconds to fsync, and frames must not wait for it), and recomposes the effective Params from the
-// layers (defaults < preset < config < knobs < --set) whenever one of them changed. Other systems just
-// read Params; a value that needs a rebuild (wave resolution) is rebuilt by the system that owns it.
+// layers (defaults < preset < config < schedule < knobs < --set) whenever one of them changed. Other systems
+// just read Params; a value that needs a rebuild (wave resolution) is rebuilt by the system that owns it.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ecs/schedule.hpp"
@@ -45,7 +47,8 @@ struct LiveTuning {
     double last_knob_change = 0;  // a failed save counts as a change: it is tried again a delay later
     double last_step = 0;         // the time live_tuning_step last ran
     bool layers_changed = false;
-    const char* change_reason = "";  // for the log line
+    std::uint64_t config_generation = 0;  // counts the reloads that applied (the schedule system follows it)
+    const char* change_reason = "";       // for the log line
 };
 
 // Creates the knobs of the current config (on `tuning.gpio`, when there are any) and starts watching
@@ -57,6 +60,8 @@ bool reload_config(LiveTuning& tuning);
 // One input-stage step at time `now`: config changes, knob events, the delayed state save, and the
 // recomposed `params` when a layer changed (logged as one line naming what changed).
 void live_tuning_step(LiveTuning& tuning, params::Params& params, double now);
+// Makes `params` the layers' composition now and logs one line: "REASON: rain.intensity 0.3 -> 0.5 (knob)".
+void apply_layers(LiveTuning& tuning, params::Params& params, std::string_view reason);
 // Input stage: live_tuning_step at the monotonic time now.
 void live_tuning_system(LiveTuning& tuning, params::Params& params);
 // Hands the knob state to the saver thread when it has unsaved changes (the delayed save, the "save"

@@ -24,7 +24,8 @@ struct CanvasLayout {
     int degrees = 0;
     glm::ivec2 size{0, 0};
     bool scaled = false;
-    bool needed() const { return degrees != 0 || scaled; }
+    float brightness = 1;  // display.brightness: below 1 the last pass dims the picture
+    bool needed() const { return degrees != 0 || scaled || brightness < 1; }
 };
 
 CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size) {
@@ -34,6 +35,7 @@ CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size
     const float scale = params.get<params::ParamId::render_scale>();
     l.size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
     l.scaled = l.size != turned;
+    l.brightness = params.get<params::ParamId::display_brightness>();
     return l;
 }
 
@@ -55,6 +57,7 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
     const glm::ivec2 size = l.size;
     r.quarter_turns = degrees / 90;
     r.scaled = l.scaled;
+    r.brightness = l.brightness;
     if (!l.needed()) return display;
     const CanvasPass pass = canvas_pass(r.scaled);
     const bool ready = r.pipelines.request(device, pass, [&] { return canvas_desc(pass); }) != nullptr;
@@ -72,9 +75,10 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
         if (canvas) {
             r.canvas = std::move(canvas).value();
             r.canvas_size = size;
-            spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}",
+            spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}{}",
                          display.size.x, display.size.y, degrees, size.x, size.y,
-                         r.scaled ? " and is scaled up" : "");
+                         r.scaled ? " and is scaled up" : "",
+                         r.brightness < 1 ? "; dimmed in the last pass" : "");
         } else {
             // The old canvas has the wrong size for this frame: the scene renders straight to the display.
             spdlog::error("{} (showing the picture unturned, at full size)", canvas.error().message);
@@ -84,13 +88,14 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
     if (!ready || size == r.failed_size) {
         r.quarter_turns = 0;
         r.scaled = false;
+        r.brightness = 1;
         return display;
     }
     return {&r.canvas, size};
 }
 
 void output_canvas_system(gpu::Device& device, const OutputCanvas& r) {
-    if (r.quarter_turns == 0 && !r.scaled) return;
+    if (r.quarter_turns == 0 && !r.scaled && r.brightness >= 1) return;
     const render::BuiltPipeline* built = r.pipelines.find(canvas_pass(r.scaled));
     if (!built) return;  // begin_canvas_frame rendered the scene to the display then
     auto pass = device.begin_pass(
@@ -101,6 +106,7 @@ void output_canvas_system(gpu::Device& device, const OutputCanvas& r) {
     else
         pass.set_texture(0, r.canvas, r.sampler);
     pass.set("u_quarter_turns", r.quarter_turns);
+    pass.set("u_brightness", r.brightness);
     pass.draw_fullscreen();
 }
 

@@ -3,8 +3,10 @@
 // - display.rotation (0, 90, 180, 270, clockwise as seen on the screen), done in GL: the scene renders
 //   upright into a canvas the size of the turned screen, and a last pass turns it onto the display;
 // - render.scale below 1: the canvas is that fraction of the screen, and the last pass scales it up
-//   with bilinear filtering.
-// With neither, the scene renders straight to the display and this costs nothing.
+//   with bilinear filtering;
+// - display.brightness below 1: the last pass multiplies every colour channel by it, once, on the
+//   display-encoded values (0.5 halves each 8-bit value: about a fifth of the light on an sRGB screen).
+// With none of them, the scene renders straight to the display and this costs nothing.
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -21,7 +23,8 @@ using CanvasPipelines = render::PipelineCache<CanvasPass, canvas_pass_count, ren
 // Resource.
 struct OutputCanvas {
     int quarter_turns = 0;
-    bool scaled = false;  // the canvas is smaller than the (turned) screen
+    bool scaled = false;   // the canvas is smaller than the (turned) screen
+    float brightness = 1;  // display.brightness this frame
     gpu::Texture canvas;
     glm::ivec2 canvas_size{0, 0};
     // Each built the first time it is needed; one that fails is said once, then the picture stays unturned.

@@ -13,6 +13,7 @@
 #include "systems/grid_drop_system.hpp"
 #include "systems/look_switch.hpp"
 #include "systems/ocean_system.hpp"
+#include "systems/output_power.hpp"
 #include "systems/rain_overlay_system.hpp"
 #include "systems/render_system.hpp"
 #include "systems/scene_select.hpp"
@@ -149,6 +150,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
 
     using ecs::Stage;
     schedule.add(Stage::Input, "frame clock", frame_clock_system);
+    schedule.add(Stage::Input, "hold steps while off", hold_steps_while_off);
     schedule.add(Stage::Input, "wave rebuild", wave_rebuild_system);
     schedule.add(Stage::Input, "environment reload", environment_reload_system);
     schedule.add(Stage::Input, "look switch", look_switch_system);
@@ -158,15 +160,20 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.add(Stage::Simulate, "drops", drop_system).run_if(wave_field_in_use());
     schedule.add(Stage::Simulate, "wave", wave_system).run_if(wave_field_in_use());
 
-    schedule.add(Stage::Render, "surface", surface_system).run_if(wave_field_in_use());
-    schedule.add(Stage::Render, "camera environment", camera_environment_system);
+    schedule.add(Stage::Render, "surface", surface_system).run_if(wave_field_in_use()).run_if(output_on());
+    schedule.add(Stage::Render, "camera environment", camera_environment_system).run_if(output_on());
     schedule.add(Stage::Render, "analytic ripples", analytic_ripple_system)
-        .run_if(drops_are(DropModel::analytic));
-    schedule.add(Stage::Render, "grid drops", grid_drop_system).run_if(drops_are(DropModel::grid));
-    schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::puddle));
-    schedule.add(Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::ocean));
-    schedule.add(Stage::Render, "street", street_system).run_if(look_is(Scene::street));
-    schedule.add(Stage::Render, "rain overlay", rain_overlay_system).run_if(rain_overlay_on());
+        .run_if(drops_are(DropModel::analytic))
+        .run_if(output_on());
+    schedule.add(Stage::Render, "grid drops", grid_drop_system)
+        .run_if(drops_are(DropModel::grid))
+        .run_if(output_on());
+    schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::puddle)).run_if(output_on());
+    schedule.add(Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::ocean)).run_if(output_on());
+    schedule.add(Stage::Render, "street", street_system).run_if(look_is(Scene::street)).run_if(output_on());
+    schedule.add(Stage::Render, "rain overlay", rain_overlay_system)
+        .run_if(rain_overlay_on())
+        .run_if(output_on());
     return {};
 }
 

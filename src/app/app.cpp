@@ -10,6 +10,7 @@
 
 #include "app/check.hpp"
 #include "app/cli.hpp"
+#include "app/display_power.hpp"
 #include "app/engine.hpp"
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
@@ -25,6 +26,7 @@
 #include "platform/console_mode.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
+#include "systems/schedule_system.hpp"
 
 namespace puddle::app {
 
@@ -104,6 +106,8 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
         if (auto r = tuning.layers.set_config(std::move(*config)); !r) return r.error();
         spdlog::info("config: {} ({} values, {} knobs{}{})", path, values, knobs,
                      tuning.layers.preset_name().empty() ? "" : ", preset ", tuning.layers.preset_name());
+        // The first frame, and --print-config, already show what the schedule says now.
+        systems::activate_schedule(tuning, systems::system_wall_seconds());
     } else {
         spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
     }
@@ -125,6 +129,8 @@ std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signal
             return add_service_plugin(w, s, std::move(signals), std::move(service));
         },
         [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
+        systems::add_schedule,
+        add_display_power,
         systems::add_puddle_plugin,
     };
 }
@@ -165,7 +171,10 @@ int run(int argc, const char* const* argv) {
     if (!tuning) return fail(tuning.error());
     const auto params = std::make_unique<params::Params>(tuning->layers.compose());
     if (o.print_config) {
-        std::fputs(params::format_effective(*params, tuning->layers.preset_name()).c_str(), stdout);
+        std::fputs(
+            params::format_effective(*params, tuning->layers.preset_name(), tuning->layers.schedule_entries())
+                .c_str(),
+            stdout);
         return 0;
     }
 

@@ -18,6 +18,7 @@
 #include "params/state_store.hpp"
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
+#include "systems/schedule_system.hpp"
 
 namespace puddle::app {
 
@@ -45,6 +46,27 @@ std::string join(const std::vector<std::string>& items, std::size_t max) {
     for (std::size_t i = 0; i < items.size() && i < max; ++i) out += (i ? ", " : "") + items[i];
     if (items.size() > max) out += fmt::format(" and {} more", items.size() - max);
     return out;
+}
+
+// The schedule: the entries active now and the next transition, in local time.
+void check_schedule(Report& r, const params::Config& config) {
+    r.section("schedule");
+    const auto calendar = systems::make_calendar(config);
+    if (!calendar) {
+        r.absent("no [[schedule]] tables: the config applies at all hours");
+        return;
+    }
+    const double now = systems::system_wall_seconds();
+    std::vector<std::string> active;
+    for (int i : calendar->active_at(now))
+        active.push_back(systems::describe_entry(config.schedule[static_cast<std::size_t>(i)]));
+    r.ok(fmt::format("{} entr{}; now ({}): {}", config.schedule.size(),
+                     config.schedule.size() == 1 ? "y" : "ies", systems::local_time_text(now),
+                     active.empty() ? "none active" : join(active, 8) + " active"));
+    if (const auto next = calendar->next_transition(now))
+        r.note(fmt::format("next transition: {}", systems::describe_transition(config, *next)));
+    else
+        r.note("next transition: none in the next 8 days");
 }
 
 // The knob state a start would restore (read only): what it holds, or each value a start will drop.
@@ -122,6 +144,7 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
                              config->knobs.size(), config->preset ? ", preset " : "",
                              config->preset.value_or("")));
             knobs = config->knobs;
+            check_schedule(r, *config);
         }
     }
     if (!knobs.empty()) check_saved_state(r, o);

@@ -1,5 +1,7 @@
 #include "app/frame_systems.hpp"
 
+#include <utility>
+
 #include "ecs/frame_time.hpp"
 
 namespace puddle::app {
@@ -24,7 +26,11 @@ void capture_system(platform::Display& display, gpu::Device& device, FrameCaptur
     capture.image = read_display(display, device);  // before present: a window or KMS may not keep the frame
 }
 
-void present_system(platform::Display& display, PresentStatus& status) {
+void present_system(platform::Display& display, systems::OutputPower& power, PresentStatus& status) {
+    if (!power.on && !std::exchange(power.black_frame_pending, false)) {
+        status.result = {};
+        return;
+    }
     status.result = display.present();
 }
 
@@ -37,11 +43,12 @@ Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule) {
                                            canvas, world.resource<platform::Display>().frame_target().size);
         !r)
         return r;
+    world.insert_resource<systems::OutputPower>();
     world.insert_resource<FrameCapture>();
     world.insert_resource<PresentStatus>();
     using ecs::Stage;
     schedule.add(Stage::Input, "begin frame", begin_frame_system);
-    schedule.add(Stage::Present, "output canvas", systems::output_canvas_system);
+    schedule.add(Stage::Present, "output canvas", systems::output_canvas_system).run_if(systems::output_on());
     schedule.add(Stage::Present, "capture", capture_system);
     schedule.add(Stage::Present, "present", present_system);
     return {};

@@ -4,7 +4,7 @@
 //                          (the display, or the output canvas when it is turned or scaled)
 //   present: output canvas turns and scales the canvas onto the display
 //            capture       reads the frame back when asked (screenshots, tests)
-//            present       shows it (swap, page flip, or the headless fence)
+//            present       shows it (swap, page flip, or the headless fence); nothing while the output is off
 // add_display_plugin registers them; the engine installs it before any feature, so the frame is one run
 // of the schedule from the clock to the present.
 
@@ -15,6 +15,7 @@
 #include "params/param_store.hpp"
 #include "platform/display.hpp"
 #include "systems/output_canvas.hpp"
+#include "systems/output_power.hpp"
 #include "systems/render_system.hpp"
 #include "util/result.hpp"
 
@@ -34,13 +35,16 @@ struct PresentStatus {
 void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
                         systems::OutputCanvas& canvas, systems::RenderTarget& target);
 void capture_system(platform::Display& display, gpu::Device& device, FrameCapture& capture);
-void present_system(platform::Display& display, PresentStatus& status);
+// While the output is off nothing is presented (but the one black frame of going off), and the status
+// stays good, so the watchdog is still pinged.
+void present_system(platform::Display& display, systems::OutputPower& power, PresentStatus& status);
 
 // The display's frame target read back now, top row first (RGBA8, the display's size).
 assets::Image read_display(platform::Display& display, gpu::Device& device);
 
 // Needs platform::Display, gpu::Device and params::Params in the world; inserts RenderTarget,
-// OutputCanvas, ecs::FrameTime, FrameCapture and PresentStatus and registers the systems above.
+// OutputCanvas, systems::OutputPower, ecs::FrameTime, FrameCapture and PresentStatus and registers the
+// systems above.
 Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule);
 
 }  // namespace puddle::app

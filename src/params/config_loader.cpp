@@ -8,89 +8,15 @@
 #include <sstream>
 
 #include "params/knob_spec_parse.hpp"
+#include "params/schedule_spec_parse.hpp"
 #include "params/toml_limits.hpp"
 #include "params/toml_syntax_error.hpp"
+#include "params/toml_value.hpp"
 #include "util/safe_quote.hpp"
 
 namespace puddle::params {
 
 namespace {
-
-int line_of(const toml::node& n) {
-    return static_cast<int>(n.source().begin.line);
-}
-
-// The value as written, on one line: numbers in their shortest form (1e+300, not toml++'s
-// 1.0000000000000001e+300), arrays as [1, 2, 3].
-std::string toml_text(const toml::node& n) {
-    if (auto i = n.value_exact<int64_t>()) return fmt::format("{}", *i);
-    if (auto f = n.value_exact<double>()) return fmt::format("{}", *f);
-    if (const toml::array* a = n.as_array()) {
-        std::string out = "[";
-        for (const toml::node& e : *a) out += (out.size() > 1 ? ", " : "") + toml_text(e);
-        return out + "]";
-    }
-    std::ostringstream out;
-    n.visit([&](auto&& v) { out << v; });
-    return out.str();
-}
-
-// Converts a TOML node to the declared kind. Numbers (toml++ gives int64 or double) are checked against
-// the range before they are narrowed (number_value); the error names the key and the value as written.
-Result<ParamValue> convert(const ParamDecl& d, const toml::node& n) {
-    auto wrong_type = [&] {
-        return make_error(ExitCode::Config, "{} = {} has the wrong type: expected {}", d.name,
-                          safe_quote(toml_text(n)), describe_range(d));
-    };
-    auto number = [&]() -> Result<ParamValue> {
-        if (auto i = n.value_exact<int64_t>()) return number_value(d, *i);
-        if (auto f = n.value_exact<double>()) return number_value(d, *f);
-        return wrong_type();
-    };
-    switch (d.kind) {
-        case ParamKind::Bool:
-            if (auto b = n.value_exact<bool>()) return ParamValue(*b);
-            return wrong_type();
-        case ParamKind::Int:
-            if (n.is_floating_point()) return wrong_type();  // 2.5 is not an integer, not even 2.0
-            return number();
-        case ParamKind::Float:
-            return number();
-        case ParamKind::Vec3:
-        case ParamKind::Color: {
-            const toml::array* a = n.as_array();
-            if (!a || a->size() != 3) return wrong_type();
-            glm::vec3 c{};
-            for (std::size_t i = 0; i < 3; ++i) {
-                const toml::node& e = (*a)[i];
-                std::optional<double> x = e.value_exact<double>();
-                if (auto whole = e.value_exact<int64_t>()) x = static_cast<double>(*whole);
-                if (!x) return wrong_type();
-                // Past a float's range is out of range as written, not infinity; validate() checks the rest.
-                if (!std::isfinite(static_cast<float>(*x))) return out_of_range(d, toml_text(n));
-                c[static_cast<int>(i)] = static_cast<float>(*x);
-            }
-            return ParamValue(c);
-        }
-        case ParamKind::Enum:
-            if (auto s = n.value_exact<std::string>()) return ParamValue(*s);
-            return wrong_type();
-        case ParamKind::Path:
-            if (auto s = n.value_exact<std::string>()) return ParamValue(*s);
-            // Six cubemap faces may be given as an array of paths; they travel joined by '|'.
-            if (const toml::array* a = n.as_array(); a && !a->empty()) {
-                std::string joined;
-                for (const toml::node& e : *a) {
-                    auto s = e.value_exact<std::string>();
-                    if (!s) return wrong_type();
-                    joined += (joined.empty() ? "" : "|") + *s;
-                }
-                return ParamValue(joined);
-            }
-            return wrong_type();
-    }
-    return wrong_type();
-}
 
 // Every key of a file: the valid ones in `config`, one error per bad one (with its line).
 struct Parsed {
@@ -122,68 +48,110 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path, int* synt
             auto name = section_node.value_exact<std::string>();
             if (!name || name->empty())
                 problem(
-                    line_of(section_node),
+                    toml_line(section_node),
                     make_error(ExitCode::Config,
                                "config: {}:{}: preset must be a preset's name, e.g. preset = \"downpour\"",
-                               path, line_of(section_node)));
+                               path, toml_line(section_node)));
             else
-                config.preset = *name, config.preset_line = line_of(section_node);
+                config.preset = *name, config.preset_line = toml_line(section_node);
             continue;
         }
         if (section_key.str() == "knob") {
             const toml::array* knobs = section_node.as_array();
             if (!knobs || !knobs->is_array_of_tables()) {
-                problem(line_of(section_node),
+                problem(toml_line(section_node),
                         make_error(ExitCode::Config, "config: {}:{}: knobs are written as [[knob]] tables",
-                                   path, line_of(section_node)));
+                                   path, toml_line(section_node)));
                 continue;
             }
             if (knobs->size() > max_knobs) {
-                problem(line_of(section_node),
+                problem(toml_line(section_node),
                         make_error(ExitCode::Config, "config: {}:{}: {} [[knob]] tables; the limit is {}",
-                                   path, line_of(section_node), knobs->size(), max_knobs));
+                                   path, toml_line(section_node), knobs->size(), max_knobs));
                 continue;
             }
             int index = 0;
             for (const toml::node& k : *knobs) {
                 auto knob = parse_knob(*k.as_table(), path, ++index);
                 if (!knob)
-                    problem(line_of(k), knob.error());
+                    problem(toml_line(k), knob.error());
                 else
                     config.knobs.push_back(std::move(*knob));
             }
             continue;
         }
+        if (section_key.str() == "schedule") {
+            const toml::array* entries = section_node.as_array();
+            if (!entries || !entries->is_array_of_tables()) {
+                problem(toml_line(section_node),
+                        make_error(ExitCode::Config,
+                                   "config: {}:{}: schedule entries are written as [[schedule]] tables", path,
+                                   toml_line(section_node)));
+                continue;
+            }
+            if (entries->size() > max_schedule_entries) {
+                problem(toml_line(section_node),
+                        make_error(ExitCode::Config, "config: {}:{}: {} [[schedule]] tables; the limit is {}",
+                                   path, toml_line(section_node), entries->size(), max_schedule_entries));
+                continue;
+            }
+            int number = 0;
+            for (const toml::node& t : *entries) {
+                auto entry = parse_schedule_entry(*t.as_table(), path, ++number);
+                if (!entry)
+                    problem(toml_line(t), entry.error());
+                else
+                    config.schedule.push_back(std::move(*entry));
+            }
+            continue;
+        }
+        if (section_key.str() == "location" && section_node.is_table()) {
+            auto location = parse_location(*section_node.as_table(), path);
+            if (!location)
+                problem(toml_line(section_node), location.error());
+            else
+                config.location = *location;
+            continue;
+        }
         const toml::table* section = section_node.as_table();
         if (!section) {
             const std::string key(section_key.str());
-            problem(line_of(section_node),
+            problem(toml_line(section_node),
                     make_error(ExitCode::Config,
                                "config: {}:{}: '{}' must be inside a [section] (did you mean '{}'?)", path,
-                               line_of(section_node), safe_quote(key), nearest_param_name(key)));
+                               toml_line(section_node), safe_quote(key), nearest_param_name(key)));
             continue;
         }
         for (auto&& [key, node] : *section) {
             const std::string name = fmt::format("{}.{}", section_key.str(), key.str());
             const ParamDecl* d = find_param(name);
             if (!d) {
-                problem(line_of(node),
+                problem(toml_line(node),
                         make_error(ExitCode::Config, "config: {}:{}: unknown key '{}' (did you mean '{}'?)",
-                                   path, line_of(node), safe_quote(name), nearest_param_name(name)));
+                                   path, toml_line(node), safe_quote(name), nearest_param_name(name)));
                 continue;
             }
-            auto value = convert(*d, node);
+            auto value = toml_param_value(*d, node);
             if (value) {
                 if (auto ok = validate(*d, *value); !ok) value = ok.error();
             }
             if (!value) {
-                problem(line_of(node), make_error(ExitCode::Config, "config: {}:{}: {}", path, line_of(node),
-                                                  value.error().message));
+                problem(toml_line(node), make_error(ExitCode::Config, "config: {}:{}: {}", path,
+                                                    toml_line(node), value.error().message));
                 continue;
             }
-            config.entries.push_back({d->id, std::move(*value), line_of(node)});
+            config.entries.push_back({d->id, std::move(*value), toml_line(node)});
         }
     }
+    if (!config.location)
+        for (const ScheduleEntry& e : config.schedule)
+            if (e.rule.uses_sun())
+                problem(e.line,
+                        make_error(ExitCode::Config,
+                                   "config: {}:{}: schedule[{}]: sunrise and sunset need a [location] "
+                                   "with latitude and longitude, e.g. [location] latitude = 52.52, "
+                                   "longitude = 13.40",
+                                   path, e.line, e.number));
     // toml++ visits keys in name order; report problems and keep entries in file order, as people read it.
     std::stable_sort(out.problems.begin(), out.problems.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });

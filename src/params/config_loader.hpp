@@ -1,6 +1,7 @@
 #pragma once
 // The TOML config: `[section]` tables whose keys are the registry's names (`[rain] drop_count = 20`
-// is rain.drop_count), an optional top-level `preset = "name"`, and `[[knob]]` tables. Presets and the
+// is rain.drop_count), an optional top-level `preset = "name"`, `[[knob]]` tables, `[[schedule]]`
+// tables and `[location]` (params/schedule_spec.hpp). Presets and the
 // saved state use the same format. A file is validated completely before anything is applied; the
 // first problem is reported with file:line, the key, the value and what is allowed.
 
@@ -11,6 +12,7 @@
 
 #include "params/knob_spec.hpp"
 #include "params/param_store.hpp"
+#include "params/schedule_spec.hpp"
 #include "util/result.hpp"
 
 namespace puddle::params {
@@ -27,6 +29,8 @@ struct Config {
     std::optional<std::string> preset;  // top-level `preset = "downpour"`
     int preset_line = 0;
     std::vector<KnobSpec> knobs;  // `[[knob]]` tables
+    std::vector<ScheduleEntry> schedule;      // `[[schedule]]` tables, in file order
+    std::optional<ScheduleLocation> location;  // `[location]`, required when an entry uses sunrise or sunset
 };
 
 // At most this many [[knob]] tables: each holds GPIO lines and a queue of events.

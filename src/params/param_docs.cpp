@@ -42,15 +42,21 @@ std::string format_params_markdown() {
     return out;
 }
 
-std::string format_effective(const Params& params, std::string_view preset) {
+std::string format_effective(const Params& params, std::string_view preset,
+                             std::span<const int> schedule_entries) {
     std::string out = fmt::format(
-        "# Effective values; after each, where it came from (default < preset < config < "
+        "# Effective values; after each, where it came from (default < preset < config < schedule < "
         "knob < --set).\n# preset: {}\n",
         preset.empty() ? "none" : preset);
     for (const ParamDecl& d : param_decls()) {
         const ParamSource s = params.source(d.id);
+        const auto k = static_cast<std::size_t>(d.id);
+        std::string detail;
+        if (s == ParamSource::Preset) detail = fmt::format(" {}", preset);
+        if (s == ParamSource::Schedule && k < schedule_entries.size() && schedule_entries[k] > 0)
+            detail = fmt::format("[{}]", schedule_entries[k]);
         out += fmt::format("{:<26} = {:<24} # {}{}\n", d.name, format_value(params.at(d.id)), source_name(s),
-                           s == ParamSource::Preset ? fmt::format(" {}", preset) : "");
+                           detail);
     }
     return out;
 }

@@ -2,6 +2,7 @@
 // The registry as text: `puddle --list-params` and the README's parameter table (a test keeps the README
 // equal to format_params_markdown()).
 
+#include <span>
 #include <string>
 
 #include "params/param_store.hpp"
@@ -10,7 +11,9 @@ namespace puddle::params {
 
 std::string format_params_list();      // one block per parameter, for a terminal
 std::string format_params_markdown();  // | name | type | default | range | help |
-// `--print-config`: every effective value and where it came from (naming the preset, if any).
-std::string format_effective(const Params& params, std::string_view preset = {});
+// `--print-config`: every effective value and where it came from (naming the preset, if any, and the
+// schedule entry: `schedule_entries[id]` is N of schedule[N], ParamLayers::schedule_entries()).
+std::string format_effective(const Params& params, std::string_view preset = {},
+                             std::span<const int> schedule_entries = {});
 
 }  // namespace puddle::params

@@ -41,9 +41,22 @@ Result<void> ParamLayers::set_config(Config config) {
         return make_error(ExitCode::Config, "config: {}:{}: preset = \"{}\": {}", config.path,
                           config.preset_line, name, inner);
     }
+    std::vector<Config> schedule_presets(config.schedule.size());
+    for (std::size_t i = 0; i < config.schedule.size(); ++i) {
+        const ScheduleEntry& e = config.schedule[i];
+        if (!e.preset) continue;
+        if (auto r = resolve_preset(*e.preset, schedule_presets[i]); !r) {
+            std::string_view inner = r.error().message;
+            if (inner.starts_with("config: ")) inner.remove_prefix(8);
+            return make_error(ExitCode::Config, "config: {}:{}: schedule[{}]: preset = \"{}\": {}",
+                              config.path, e.line, e.number, *e.preset, inner);
+        }
+    }
     config_ = std::move(config);
     preset_ = std::move(preset);
     preset_name_ = name;
+    schedule_presets_ = std::move(schedule_presets);
+    std::erase_if(schedule_active_, [&](int i) { return i >= static_cast<int>(config_.schedule.size()); });
     return {};
 }
 
@@ -101,10 +114,46 @@ std::string ParamLayers::state_text() const {
     return out;
 }
 
+bool ParamLayers::set_active_schedule(std::vector<int> active) {
+    std::erase_if(active, [&](int i) { return i < 0 || i >= static_cast<int>(config_.schedule.size()); });
+    if (active == schedule_active_) return false;
+    schedule_active_ = std::move(active);
+    return true;
+}
+
+bool ParamLayers::clear_knobs_set_by(int entry) {
+    if (entry < 0 || entry >= static_cast<int>(config_.schedule.size())) return false;
+    bool held = false;
+    auto clear = [&](ParamId id) {
+        held |= std::exchange(knob_[static_cast<std::size_t>(id)], std::nullopt).has_value();
+    };
+    for (const ConfigEntry& e : schedule_presets_[static_cast<std::size_t>(entry)].entries) clear(e.id);
+    for (const ScheduledValue& v : config_.schedule[static_cast<std::size_t>(entry)].values) clear(v.id);
+    return held;
+}
+
+std::array<int, param_count> ParamLayers::schedule_entries() const {
+    std::array<int, param_count> out{};
+    for (int i : schedule_active_) {
+        const auto k = static_cast<std::size_t>(i);
+        for (const ConfigEntry& e : schedule_presets_[k].entries)
+            out[static_cast<std::size_t>(e.id)] = config_.schedule[k].number;
+        for (const ScheduledValue& v : config_.schedule[k].values)
+            out[static_cast<std::size_t>(v.id)] = config_.schedule[k].number;
+    }
+    return out;
+}
+
 Params ParamLayers::compose() const {
     Params p;
     apply_config(preset_, p, ParamSource::Preset);
     apply_config(config_, p, ParamSource::Config);
+    for (int i : schedule_active_) {
+        const auto k = static_cast<std::size_t>(i);
+        apply_config(schedule_presets_[k], p, ParamSource::Schedule);
+        for (const ScheduledValue& v : config_.schedule[k].values)
+            p.set(v.id, v.value, ParamSource::Schedule);
+    }
     for (const ParamDecl& d : param_decls())
         if (const auto& v = knob_[static_cast<std::size_t>(d.id)]) p.set(d.id, *v, ParamSource::Knob);
     for (const ConfigEntry& e : command_line_) p.set(e.id, e.value, ParamSource::CommandLine);

@@ -1,6 +1,6 @@
 #pragma once
 // Where values come from while the program runs, lowest to highest precedence:
-//   built-in defaults < preset < config file < knob state < --set
+//   built-in defaults < preset < config file < schedule < knob state < --set
 // Each source is kept as its own layer; any change recomposes the effective Params from all of them, so
 // a reloaded config never overwrites a knob's value and a removed config line falls back to the preset
 // or the default.
@@ -43,6 +43,19 @@ public:
     // The knob state as the text of a state file.
     std::string state_text() const;
 
+    // The schedule layer, between the config and the knobs: the config's [[schedule]] entries active now,
+    // as indices into config().schedule in file order; each applies its preset's values, then its own, and
+    // a later entry wins. set_config keeps only indices that still exist: the schedule system evaluates
+    // the new entries (systems/schedule_system.hpp). Returns true when the set changed.
+    bool set_active_schedule(std::vector<int> active);
+    const std::vector<int>& active_schedule() const { return schedule_active_; }
+    // At a schedule transition: forgets the knob values of the parameters entry `entry` sets (its values
+    // and its preset's), so the schedule applies again. True when a knob value was held.
+    bool clear_knobs_set_by(int entry);
+    // Per parameter, the number N of the active entry (schedule[N]) whose value the schedule layer gives,
+    // 0 where it gives none (--print-config).
+    std::array<int, param_count> schedule_entries() const;
+
     Params compose() const;
 
 private:
@@ -54,6 +67,8 @@ private:
     std::string knob_preset_;
     std::array<std::optional<ParamValue>, param_count> knob_{};
     std::vector<ConfigEntry> command_line_;
+    std::vector<Config> schedule_presets_;  // each entry's preset (empty without one), as config_.schedule
+    std::vector<int> schedule_active_;
 };
 
 // Clamps a number to its declaration's range (other kinds unchanged).

@@ -279,5 +279,30 @@ TEST(Check, AnInvalidConfigIsExitCodeTwoWithFileLine) {
     EXPECT_TRUE(has(o.output, "\n1 thing(s) to fix (FIX above).\n")) << o.output;
 }
 
+// The schedule's section: the entries active now and the next transition in local time (a window of the
+// whole day is active at any hour and ends at the next midnight).
+TEST(Check, PrintsTheActiveScheduleEntriesAndTheNextTransition) {
+    TempDir dir;
+    const std::string cfg = dir.write(
+        "night.toml",
+        "[[schedule]]\nfrom = \"00:00\"\nto = \"24:00\"\nbrightness = 0.5\n[[schedule]]\ndays = \"mon-fri\"\n"
+        "at = \"sunset\"\ndisplay = \"off\"\n[location]\nlatitude = 52.5\nlongitude = 13.4\n");
+    const std::string dri = node_folder(dir, "dri", {});
+    const std::string dev = node_folder(dir, "dev", {});
+    const CommandResult o =
+        check_here({"--gpio", "mock:", "--config", cfg}, {.dri_folder = dri, .video_folder = dev});
+    const auto schedule = sections(o.output)["[schedule]"];
+    ASSERT_EQ(schedule.size(), 2u) << o.output;
+    EXPECT_TRUE(schedule[0].starts_with("  OK    2 entries; now (")) << schedule[0];
+    EXPECT_TRUE(has(schedule[0], "): schedule[1] (daily from 00:00 to 24:00)")) << schedule[0];
+    EXPECT_TRUE(schedule[1].starts_with("        next transition: schedule[")) << schedule[1];
+
+    const std::string none = dir.write("none.toml", "[rain]\ndrop_count = 40\n");
+    const CommandResult n =
+        check_here({"--gpio", "mock:", "--config", none}, {.dri_folder = dri, .video_folder = dev});
+    EXPECT_EQ(sections(n.output)["[schedule]"],
+              std::vector<std::string>{"  --    no [[schedule]] tables: the config applies at all hours"});
+}
+
 }  // namespace
 }  // namespace puddle::test

@@ -29,14 +29,17 @@ std::vector<std::string> binary_schedule() {
         "input/begin frame (reads Params; writes Display, Device, OutputCanvas, RenderTarget)",
         "input/reload signal (writes StopSignals, LiveTuning)",
         "input/live tuning (writes LiveTuning, Params)",
+        "input/schedule (reads WallClock; writes ScheduleRun, LiveTuning, Params)",
+        "input/display power (reads Params; writes Display, Device, OutputPower, DisplayPower)",
     };
     lines.insert(lines.end(), test::puddle_plugin_schedule.begin(), test::puddle_plugin_schedule.end());
     for (const char* line :
-         {"present/output canvas (reads OutputCanvas; writes Device)",
+         {"present/output canvas if output on (reads OutputCanvas; writes Device)",
           "present/capture (writes Display, Device, FrameCapture)",
-          "present/present (writes Display, PresentStatus)",
+          "present/present (writes Display, OutputPower, PresentStatus)",
           "present/watchdog ping (reads PresentStatus; writes ServiceNotify)",
-          "exit/service stopping (writes ServiceNotify)", "exit/save state (writes LiveTuning)"})
+          "present/sleep while off (reads OutputPower)", "exit/service stopping (writes ServiceNotify)",
+          "exit/save state (writes LiveTuning)"})
         lines.emplace_back(line);
     return lines;
 }
@@ -79,9 +82,9 @@ TEST(Engine, WithoutFeaturesItRunsOnlyTheDisplaysSystemsAndPresents) {
               (std::vector<std::string>{
                   "input/begin frame (reads Params; writes Display, Device, OutputCanvas, RenderTarget)",
                   "render/count (writes Counts)",
-                  "present/output canvas (reads OutputCanvas; writes Device)",
+                  "present/output canvas if output on (reads OutputCanvas; writes Device)",
                   "present/capture (writes Display, Device, FrameCapture)",
-                  "present/present (writes Display, PresentStatus)",
+                  "present/present (writes Display, OutputPower, PresentStatus)",
                   "exit/count exit (writes Counts)",
               }));
     ASSERT_TRUE(e.frame(1.0 / 60).ok());

@@ -14,10 +14,13 @@
 #include <new>
 #include <string>
 
+#include "app/display_power.hpp"
 #include "app/frame_stats.hpp"
+#include "params/config_loader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
+#include "systems/schedule_system.hpp"
 
 namespace {
 
@@ -170,6 +173,32 @@ TEST(FrameAllocation, SteadyStateFramesWithLiveTuningAllocateNothing) {
     ASSERT_TRUE(engine.ok()) << engine.error().message;
     app::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);
+}
+
+// The schedule checks its cached next transition each frame and nothing more; an active entry's
+// brightness adds the output canvas's dimming pass.
+TEST(FrameAllocation, SteadyStateFramesWithAScheduleAllocateNothing) {
+    platform::DisplayOptions display;
+    display.backend = platform::BackendKind::Headless;
+    display.size = {160, 90};
+    auto config = params::parse_config(
+        "[[schedule]]\nfrom = \"00:00\"\nto = \"24:00\"\nbrightness = 0.5\n[[schedule]]\nat = \"12:00\"\n"
+        "set = { \"rain.intensity\" = 0.8 }\n",
+        "alloc.toml");
+    ASSERT_TRUE(config) << config.error().message;
+    systems::LiveTuning tuning(params::ParamLayers({}, {}));
+    ASSERT_TRUE(tuning.layers.set_config(std::move(*config)));
+    auto engine =
+        app::Engine::create(params::Params{}, display, {},
+                            {[&](ecs::World& world, ecs::Schedule& schedule) {
+                                 return systems::add_live_tuning(world, schedule, std::move(tuning));
+                             },
+                             systems::add_schedule, app::add_display_power, systems::add_puddle_plugin});
+    ASSERT_TRUE(engine.ok()) << engine.error().message;
+    (*engine)->world().resource<systems::WallClock>().now = [] { return 1.78e9 + 3600.0; };
+    app::FrameStats stats(0.5);
+    expect_no_allocation_in_frames(**engine, stats);
+    EXPECT_FLOAT_EQ((*engine)->params().get<params::ParamId::display_brightness>(), 0.5f);
 }
 
 TEST(FrameAllocation, StatsReportAllocatesNothing) {

@@ -160,13 +160,33 @@ TEST(FrameSystems, PresentStatusHoldsTheLastPresentsResult) {
     display.presents.push_back(Error{"kms: /dev/dri/card0: page flip: No such device", ExitCode::Display});
     display.presents.push_back(Result<void>{});
     PresentStatus status;
-    present_system(display, status);
+    systems::OutputPower power;
+    present_system(display, power, status);
     ASSERT_FALSE(status.result.ok());
     EXPECT_EQ(status.result.error().message, "kms: /dev/dri/card0: page flip: No such device");
     EXPECT_EQ(status.result.error().code, ExitCode::Display);
-    present_system(display, status);
+    present_system(display, power, status);
     EXPECT_TRUE(status.result.ok()) << "a later present that works replaces the error";
     EXPECT_TRUE(display.presents.empty()) << "one present per run";
+}
+
+// While the output is off: the black frame of going off is presented once, then nothing, and the status
+// stays good (the watchdog is pinged on it).
+TEST(FrameSystems, WhileOffOnlyTheBlackFrameIsPresentedAndTheStatusStaysGood) {
+    ScriptedDisplay display;
+    display.presents.push_back(Result<void>{});
+    display.presents.push_back(Error{"scripted: presented while off", ExitCode::Display});
+    PresentStatus status{Error{"an old failure", ExitCode::Display}};
+    systems::OutputPower power{.on = false, .black_frame_pending = true};
+    present_system(display, power, status);
+    EXPECT_TRUE(status.result.ok());
+    EXPECT_FALSE(power.black_frame_pending);
+    EXPECT_EQ(display.presents.size(), 1u) << "the black frame was presented";
+    for (int i = 0; i < 3; ++i) {
+        present_system(display, power, status);
+        EXPECT_TRUE(status.result.ok()) << "nothing presented, nothing failed";
+    }
+    EXPECT_EQ(display.presents.size(), 1u) << "no present while off";
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ namespace puddle::test {
 
 inline const std::vector<std::string> puddle_plugin_schedule = {
     "input/frame clock (reads FrameTime, Params; writes FrameClock)",
+    "input/hold steps while off (reads OutputPower; writes FrameClock)",
     "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
     "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
     "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, "
@@ -21,19 +22,22 @@ inline const std::vector<std::string> puddle_plugin_schedule = {
     "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, "
     "LiveDrops)",
     "simulate/wave if the wave field is in use (reads Params, LiveDrops; writes Device, WaveField)",
-    "render/surface if the wave field is in use (reads WaveField; writes Device, Surface)",
-    "render/camera environment (reads Params, Environment; writes Device, CameraEnvironment)",
-    "render/analytic ripples if drops are analytic (reads Params, FrameClock; writes Device, "
+    "render/surface if the wave field is in use and output on (reads WaveField; writes Device, Surface)",
+    "render/camera environment if output on (reads Params, Environment; writes Device, CameraEnvironment)",
+    "render/analytic ripples if drops are analytic and output on (reads Params, FrameClock; writes Device, "
     "AnalyticRipples, "
     "Surface)",
-    "render/grid drops if drops are grid (reads Params, FrameClock; writes Device, GridDrops, Surface)",
-    "render/puddle if look is puddle (reads Params, Surface, Environment, Ground, RenderTarget, "
+    "render/grid drops if drops are grid and output on (reads Params, FrameClock; writes Device, GridDrops, "
+    "Surface)",
+    "render/puddle if look is puddle and output on (reads Params, Surface, Environment, Ground, "
+    "RenderTarget, "
     "CameraEnvironment; writes Device, PuddleRenderer)",
-    "render/ocean if look is ocean (reads Params, FrameClock, RenderTarget; writes Device, "
+    "render/ocean if look is ocean and output on (reads Params, FrameClock, RenderTarget; writes Device, "
     "OceanRenderer)",
-    "render/street if look is street (reads Params, FrameClock, RenderTarget; writes Device, "
+    "render/street if look is street and output on (reads Params, FrameClock, RenderTarget; writes Device, "
     "StreetRenderer)",
-    "render/rain overlay if the rain overlay is on (reads Params, FrameClock, RenderTarget; writes Device, "
+    "render/rain overlay if the rain overlay is on and output on (reads Params, FrameClock, RenderTarget; "
+    "writes Device, "
     "RainOverlay)",
 };
 

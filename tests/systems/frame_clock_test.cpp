@@ -123,5 +123,23 @@ TEST(FrameClock, SimTimeStaysPreciseOverTenMillionSteps) {
     EXPECT_NEAR(clock.sim_time, 166666.66666666666, 1e-6);
 }
 
+// While the output is off the due steps are counted, not run: sim_time keeps up with the frames' time.
+TEST(FrameClock, StepsAreHeldWhileTheOutputIsOffAndTimeGoesOn) {
+    const params::Params p;  // 60 steps per second
+    FrameClock clock;
+    const OutputPower off{.on = false};
+    for (int i = 0; i < 30; ++i) {
+        frame(clock, p, 1.0 / 30);
+        hold_steps_while_off(off, clock);
+        EXPECT_EQ(clock.steps_due, 0);
+    }
+    EXPECT_EQ(clock.step_index, 60u);
+    EXPECT_NEAR(clock.sim_time, 1.0, 1e-9);
+    const OutputPower on{};
+    frame(clock, p, 1.0 / 30);
+    hold_steps_while_off(on, clock);
+    EXPECT_EQ(clock.steps_due, 2) << "on again, steps run from the current time";
+}
+
 }  // namespace
 }  // namespace puddle::systems

@@ -1,5 +1,6 @@
 // display.rotation: the picture on a turned screen is the upright picture turned, pixel for pixel.
 // render.scale: the picture at half scale is the half-size picture scaled up bilinearly.
+// display.brightness: the last pass multiplies each (display-encoded) 8-bit value, turned or not.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,9 +15,11 @@ namespace {
 
 constexpr int W = 160, H = 90;
 
-assets::Image render(const std::string& rotation, glm::ivec2 size, const std::string& scale = "1") {
-    auto engine = make_engine(
-        make_params({"display.rotation=" + rotation, "rain.seed=5", "render.scale=" + scale}), size);
+assets::Image render(const std::string& rotation, glm::ivec2 size, const std::string& scale = "1",
+                     const std::string& brightness = "1") {
+    auto engine = make_engine(make_params({"display.rotation=" + rotation, "rain.seed=5",
+                                           "render.scale=" + scale, "display.brightness=" + brightness}),
+                              size);
     EXPECT_TRUE(engine);
     return engine ? render_frames(*engine, 30) : assets::Image{};
 }
@@ -107,6 +110,25 @@ TEST(RenderScale, TurnsAndScalesTogether) {
     const assets::Image portrait = render("90", {2 * H, 2 * W}, "0.5");
     ASSERT_EQ(portrait.width, 2 * H);
     EXPECT_LE(compare_images(portrait, turn(scaled, 1), 1).mean_abs_diff, 0.05);
+}
+
+TEST(DisplayBrightness, HalfHalvesEveryPixelValueTurnedOrNot) {
+    for (const char* rotation : {"0", "90"}) {
+        const glm::ivec2 screen = std::string(rotation) == "0" ? glm::ivec2(W, H) : glm::ivec2(H, W);
+        const assets::Image full = render(rotation, screen);
+        const assets::Image half = render(rotation, screen, "1", "0.5");
+        ASSERT_EQ(half.data.size(), full.data.size());
+        ASSERT_GT(luma_stddev(full, 0, 0, screen.x, screen.y), 3.0);
+        int worst = 0, brightest = 0;
+        for (std::size_t i = 0; i < full.data.size(); ++i) {
+            if (i % 4 == 3) continue;  // alpha stays
+            brightest = std::max(brightest, static_cast<int>(full.data[i]));
+            worst = std::max(worst,
+                             std::abs(2 * static_cast<int>(half.data[i]) - static_cast<int>(full.data[i])));
+        }
+        EXPECT_GT(brightest, 40) << rotation;
+        EXPECT_LE(worst, 1) << rotation << ": each 8-bit value halved, to the rounding of the last bit";
+    }
 }
 
 }  // namespace

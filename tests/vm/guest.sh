@@ -180,11 +180,131 @@ gpio_test() {
     say "SKIP gpio: kernel $(uname -r) has gpio-sim, but driving it is not written yet (tests/vm/guest.sh)"
 }
 
+# --- power: display.power off and on again on virtio-gpu (issue 19) ---------------------------------
+# Puddle runs on KMS with a config that the test rewrites: display.power = false must switch the
+# connector off (DPMS, so virtio-gpu's scanout goes inactive) and true must bring the same mode back with
+# the picture. The host takes screendumps before, while off and after, and compares their brightness.
+power_test() {
+    if ! wait_for /dev/dri/card0 50; then
+        say "FAIL power: no /dev/dri/card0 after loading the DRM driver"
+        return
+    fi
+    local config=$TMPDIR/power.toml fifo=$TMPDIR/puddle-power.log line pid rc step=0 shots=""
+    printf '[display]\npower = true\n' >"$config"
+    mkfifo "$fifo"
+    # shellcheck disable=SC2086
+    "$VM_PUDDLE" --backend kms --size "${VM_W}x${VM_H}" --frames 400 --fixed-step --fps-cap "$VM_FPS" \
+        --seed "$VM_SEED" $VM_PUDDLE_SETS --config "$config" --log-level debug >"$fifo" 2>&1 &
+    pid=$!
+    set_power() {  # a rename, as editors save: the config watcher reloads
+        printf '[display]\npower = %s\n' "$1" >"$config.new" && mv "$config.new" "$config"
+    }
+    while IFS= read -r line; do
+        echo "$line" >>"$out/power.log"
+        case $step in
+            0) if [[ $line == *"kms: frame 2 on screen"* ]]; then
+                   kill -STOP "$pid"; screendump power-before && shots+="before "; kill -CONT "$pid"
+                   set_power false; step=1
+               fi ;;
+            1) if [[ $line == *"output off (DPMS off)"* ]]; then
+                   sleep 2; screendump power-off && shots+="off "
+                   set_power true; step=2
+               fi ;;
+            2) [[ $line == *"output on (DPMS on)"* ]] && step=3 ;;
+            3) if [[ $line == *"kms: frame "*" on screen"* ]]; then
+                   kill -STOP "$pid"; screendump power-on && shots+="on "; kill -CONT "$pid"
+                   kill -TERM "$pid"; step=4
+               fi ;;
+        esac
+    done <"$fifo"
+    wait "$pid"
+    rc=$?
+    if [ "$rc" -ne 0 ]; then
+        say "FAIL power: puddle exited with $rc (log: power.log)"
+    elif [ "$step" -ne 4 ]; then
+        say "FAIL power: stopped at step $step of 4 (before, off, on, picture back); log: power.log"
+    elif [ "$shots" != "before off on " ]; then
+        say "FAIL power: screendumps taken: ${shots:-none}"
+    elif grep -q -E '^(warning|error): kms' "$out/power.log"; then
+        say "FAIL power: $(grep -m1 -E '^(warning|error): kms' "$out/power.log")"
+    else
+        say "PASS power: $(grep -m1 -o 'kms: [^ ]* [^ ]* output off (DPMS off)' "$out/power.log"), then on; the picture came back"
+    fi
+}
+
+# --- cec: display.power through HDMI-CEC on vivid's emulated adapters (issue 19) ----------------------
+# vivid with one HDMI input and one HDMI output makes two CEC adapters, the output's hooked to the
+# input's: the input side plays the TV (cec-ctl --tv, and --monitor records what arrives), and puddle
+# drives the output side. display.power = false must send <Standby>, true <Image View On> and
+# <Active Source>, and the TV must see them arrive.
+cec_test() {
+    if ! load_modules vivid "n_devs=1 node_types=0x101 num_inputs=1 input_types=0x3 num_outputs=1 output_types=0x1"; then
+        say "FAIL cec: loading vivid with an HDMI input and output"
+        return
+    fi
+    if ! wait_for /dev/cec1 50; then
+        say "FAIL cec: vivid loaded but no /dev/cec0 and /dev/cec1 (CONFIG_VIDEO_VIVID_CEC?)"
+        "$busybox" rmmod vivid
+        return
+    fi
+    if ! command -v cec-ctl >/dev/null; then
+        say "SKIP cec: cec-ctl is not installed on the host (apt-get install v4l-utils)"
+        "$busybox" rmmod vivid
+        return
+    fi
+    local tv="" source="" dev
+    for dev in /dev/cec0 /dev/cec1; do  # the input adapter has as many ports as inputs; it is the TV
+        if cec-ctl -d "$dev" 2>&1 | grep -q -i "vivid-[0-9]*-vid-cap"; then tv=$dev; else source=$dev; fi
+    done
+    [ -n "$tv" ] || { tv=/dev/cec0; source=/dev/cec1; }
+    cec-ctl -d "$tv" --tv >"$out/cec-tv.log" 2>&1
+    cec-ctl -d "$tv" --monitor >"$out/cec-monitor.log" 2>&1 &
+    local monitor=$! config=$TMPDIR/cec.toml fifo=$TMPDIR/puddle-cec.log line pid rc step=0
+    printf '[display]\npower = true\ncec = true\ncec_device = "%s"\n' "$source" >"$config"
+    mkfifo "$fifo"
+    "$VM_PUDDLE" --backend headless --size 64x36 --frames 0 --config "$config" >"$fifo" 2>&1 &
+    pid=$!
+    (sleep 120; kill -TERM "$pid" 2>/dev/null) &  # runs until stopped: a step that never comes ends here
+    local guard=$!
+    set_cec_power() {
+        printf '[display]\npower = %s\ncec = true\ncec_device = "%s"\n' "$1" "$source" >"$config.new" &&
+            mv "$config.new" "$config"
+    }
+    while IFS= read -r line; do
+        echo "$line" >>"$out/cec.log"
+        case $step in
+            0) if [[ $line == *"config: watching"* ]]; then set_cec_power false; step=1; fi ;;
+            1) if [[ $line == *"cec: "*"<Standby>"* ]]; then set_cec_power true; step=2; fi ;;
+            2) if [[ $line == *"cec: "*"<Image View On> and <Active Source>"* ]]; then kill -TERM "$pid"; step=3; fi ;;
+        esac
+    done <"$fifo"
+    wait "$pid"
+    rc=$?
+    kill "$guard" 2>/dev/null
+    sleep 1
+    kill "$monitor" 2>/dev/null
+    wait "$monitor" 2>/dev/null
+    local seen
+    seen=$(grep -i -o -E 'STANDBY|IMAGE_VIEW_ON|ACTIVE_SOURCE' "$out/cec-monitor.log" | tr 'a-z' 'A-Z' | sort -u | tr '\n' ' ')
+    if [ "$rc" -ne 0 ]; then
+        say "FAIL cec: puddle exited with $rc (log: cec.log)"
+    elif [ "$step" -ne 3 ]; then
+        say "FAIL cec: stopped at step $step of 3 (off sent, on sent); log: cec.log, cec-monitor.log"
+    elif [ "$seen" != "ACTIVE_SOURCE IMAGE_VIEW_ON STANDBY " ]; then
+        say "FAIL cec: the TV adapter $tv saw: ${seen:-nothing} (cec-monitor.log)"
+    else
+        say "PASS cec: puddle on $source sent <Standby>, <Image View On> and <Active Source>; the TV on $tv saw them ($(grep -m1 -o 'cec: [^(]*acknowledged[^)]*' "$out/cec.log" || true))"
+    fi
+    "$busybox" rmmod vivid || say "NOTE cec: vivid did not unload"
+}
+
 for t in $VM_TESTS; do
     case $t in
         kms) kms_test ;;
         camera) camera_test ;;
         gpio) gpio_test ;;
+        power) power_test ;;
+        cec) cec_test ;;
         *) say "FAIL $t: unknown test" ;;
     esac
 done

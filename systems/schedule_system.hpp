@@ -1,0 +1,63 @@
+#pragma once
+// The schedule layer while the display runs: the config's [[schedule]] entries (schedule::Calendar)
+// evaluated against the wall clock, in the input stage right after live tuning. It works only at a
+// transition (the next one is cached; other frames compare two doubles and allocate nothing), after a
+// config reload, and when the wall clock goes back (an NTP correction). At a transition the knob values
+// of the parameters the entries concerned set are forgotten: a knob turned during a window holds until
+// the next transition, then the schedule applies again.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "ecs/schedule.hpp"
+#include "ecs/world.hpp"
+#include "params/param_store.hpp"
+#include "params/schedule_spec.hpp"
+#include "schedule/calendar.hpp"
+#include "systems/live_tuning.hpp"
+
+namespace puddle::systems {
+
+// Seconds since the Unix epoch (UTC), from CLOCK_REALTIME.
+double system_wall_seconds();
+
+// Resource: the wall clock the schedule reads. Tests replace `now`.
+struct WallClock {
+    std::function<double()> now = system_wall_seconds;
+};
+
+// Resource.
+struct ScheduleRun {
+    std::optional<schedule::Calendar> calendar;           // none when the config has no [[schedule]] table
+    std::uint64_t config_generation = ~std::uint64_t{0};  // the LiveTuning::config_generation it was made for
+    bool evaluated = false;
+    double last_evaluated = 0;
+    double next_evaluation = 0;  // the next transition, or a day later when none is in sight
+};
+
+// The calendar of a config's entries (none without entries).
+std::optional<schedule::Calendar> make_calendar(const params::Config& config);
+
+// Sets the entries active at `now` in `tuning.layers` when due (see above) and returns true when the
+// layers changed; `params` is then recomposed and the change logged ("schedule: schedule[2] starts: ...").
+bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params, double now);
+// Input stage: schedule_step at the wall clock's time.
+void schedule_system(const WallClock& clock, ScheduleRun& run, LiveTuning& tuning, params::Params& params);
+
+// Start-up and --print-config: the entries active at `now`, set in the layers without clearing knobs.
+void activate_schedule(LiveTuning& tuning, double now);
+
+// "schedule[2] (mon-fri from 23:00 to 07:00)", "schedule[3] (daily at sunset-00:30)".
+std::string describe_entry(const params::ScheduleEntry& entry);
+// "schedule[2] ends at Wed 2026-12-02 07:00 CET".
+std::string describe_transition(const params::Config& config, const schedule::Transition& transition);
+// "Wed 2026-12-02 07:00 CET": local time, as the system's time zone gives it.
+std::string local_time_text(double t);
+
+// Inserts WallClock and ScheduleRun and adds schedule_system to the input stage (after live tuning, which
+// it needs).
+Result<void> add_schedule(ecs::World& world, ecs::Schedule& schedule);
+
+}  // namespace puddle::systems

@@ -1,0 +1,211 @@
+// The schedule layer with an injected wall clock and TZ set: windows past midnight, weekdays, both
+// daylight-saving changes, a sunset entry, overlapping entries (the later wins), a knob override that
+// holds until the next transition, and --print-config naming the entry.
+#include "systems/schedule_system.hpp"
+
+#include <gtest/gtest.h>
+
+#include <ctime>
+
+#include "params/param_docs.hpp"
+#include "schedule/solar.hpp"
+#include "schedule/tz_guard.hpp"
+#include "support/parsed_config.hpp"
+
+namespace puddle::systems {
+namespace {
+
+using params::ParamId;
+using params::ParamSource;
+
+// A local clock time as a UTC instant (mktime: the zone's rules, daylight saving included).
+double local(int y, int mo, int d, int h, int mi) {
+    tm l{};
+    l.tm_year = y - 1900;
+    l.tm_mon = mo - 1;
+    l.tm_mday = d;
+    l.tm_hour = h;
+    l.tm_min = mi;
+    l.tm_isdst = -1;
+    return static_cast<double>(mktime(&l));
+}
+
+struct Rig {
+    explicit Rig(const char* config_text) : tuning(params::ParamLayers(params::Presets::load({}), {})) {
+        auto r = tuning.layers.set_config(test::parsed_config(config_text));
+        EXPECT_TRUE(r) << r.error().message;
+        params.replace_with(tuning.layers.compose());
+    }
+    // One frame's schedule step at `t`.
+    bool at(double t) { return schedule_step(run, tuning, params, t); }
+    bool power() const { return params.get<ParamId::display_power>(); }
+    LiveTuning tuning;
+    params::Params params;
+    ScheduleRun run;
+};
+
+constexpr const char* night_off = R"(
+[[schedule]]
+from = "23:00"
+to = "07:00"
+display = "off"
+)";
+
+TEST(ScheduleSystem, AWindowPastMidnightSwitchesAtItsEdgesAndOnlyThenDoesWork) {
+    test::TzGuard tz("Europe/Berlin");
+    Rig rig(night_off);
+    EXPECT_FALSE(rig.at(local(2026, 6, 5, 22, 59)));  // first evaluation: nothing active, nothing changes
+    EXPECT_TRUE(rig.power());
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, local(2026, 6, 5, 23, 0));  // the next transition, cached
+    EXPECT_FALSE(rig.at(local(2026, 6, 5, 22, 59) + 30));                 // before it: no work
+    EXPECT_TRUE(rig.at(local(2026, 6, 5, 23, 0)));
+    EXPECT_FALSE(rig.power());
+    EXPECT_EQ(rig.params.source(ParamId::display_power), ParamSource::Schedule);
+    EXPECT_FALSE(rig.at(local(2026, 6, 6, 6, 59)));  // still off after midnight
+    EXPECT_FALSE(rig.power());
+    EXPECT_TRUE(rig.at(local(2026, 6, 6, 7, 0)));
+    EXPECT_TRUE(rig.power());
+    EXPECT_EQ(rig.params.source(ParamId::display_power), ParamSource::Default);
+}
+
+TEST(ScheduleSystem, WeekdayEntriesSkipTheWeekend) {
+    test::TzGuard tz("America/New_York");
+    Rig rig(
+        "[[schedule]]\ndays = \"mon-fri\"\nfrom = \"09:00\"\nto = \"17:00\"\nset = { \"rain.intensity\" = "
+        "1.5 }\n");
+    rig.at(local(2026, 6, 5, 12, 0));  // Friday
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 1.5f);
+    rig.at(local(2026, 6, 5, 17, 0));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.3f);  // the default again
+    rig.at(local(2026, 6, 6, 12, 0));                                  // Saturday
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.3f);
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, local(2026, 6, 8, 9, 0));  // Monday 09:00
+}
+
+// The night the clocks go forward (Berlin, 2026-03-29 02:00 -> 03:00) lasts seven hours, the night they go
+// back (2026-10-25 03:00 -> 02:00) nine; the screen comes on at 07:00 local time on both mornings.
+TEST(ScheduleSystem, BothDaylightSavingChangesKeepLocalTimes) {
+    test::TzGuard tz("Europe/Berlin");
+    for (int month : {3, 10}) {
+        const int day = month == 3 ? 28 : 24;
+        Rig rig(night_off);
+        rig.at(local(2026, month, day, 23, 30));
+        EXPECT_FALSE(rig.power()) << month;
+        const double on = local(2026, month, day + 1, 7, 0);
+        EXPECT_DOUBLE_EQ(rig.run.next_evaluation, on) << month;
+        EXPECT_DOUBLE_EQ(on - local(2026, month, day, 23, 30), (month == 3 ? 6.5 : 8.5) * 3600) << month;
+        rig.at(on - 1);
+        EXPECT_FALSE(rig.power()) << month;
+        rig.at(on);
+        EXPECT_TRUE(rig.power()) << month;
+    }
+}
+
+TEST(ScheduleSystem, ASunsetEntryStartsAtThatDaysSunsetWithItsOffset) {
+    test::TzGuard tz("Europe/Berlin");
+    Rig rig(R"(
+[location]
+latitude = 52.52
+longitude = 13.40
+[[schedule]]
+from = "sunset-00:30"
+to = "23:00"
+set = { "look.vignette" = 1.2 }
+brightness = 0.6
+)");
+    const auto sun = schedule::sun_times({2026, 6, 5}, {52.52, 13.40});
+    ASSERT_TRUE(sun.sunset);
+    const double start = *sun.sunset - 30 * 60;
+    rig.at(start - 60);
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::display_brightness>(), 1.0f);
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, start);
+    rig.at(start);
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::display_brightness>(), 0.6f);
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::look_vignette>(), 1.2f);
+    rig.at(local(2026, 6, 5, 23, 0));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::display_brightness>(), 1.0f);
+}
+
+TEST(ScheduleSystem, OverlappingEntriesApplyInFileOrderSoTheLaterWins) {
+    test::TzGuard tz("UTC");
+    Rig rig(R"(
+[rain]
+intensity = 0.5
+[[schedule]]
+from = "18:00"
+to = "23:00"
+set = { "rain.intensity" = 1.0, "rain.speed" = 2.0 }
+[[schedule]]
+from = "20:00"
+to = "22:00"
+set = { "rain.intensity" = 2.0 }
+)");
+    rig.at(local(2026, 6, 5, 19, 0));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 1.0f);  // schedule over config
+    rig.at(local(2026, 6, 5, 21, 0));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 2.0f);  // the later entry
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_speed>(), 2.0f);      // the earlier one's other value
+    // --print-config names the entry each value comes from.
+    const std::string printed =
+        params::format_effective(rig.params, "", rig.tuning.layers.schedule_entries());
+    EXPECT_NE(printed.find("rain.intensity             = 2                        # schedule[2]\n"),
+              std::string::npos)
+        << printed;
+    EXPECT_NE(printed.find("rain.speed                 = 2                        # schedule[1]\n"),
+              std::string::npos)
+        << printed;
+    rig.at(local(2026, 6, 5, 23, 30));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.5f);  // the config again
+}
+
+// A knob (or a remote command) set during a window holds until the next transition; then the schedule
+// applies again and the knob value is forgotten.
+TEST(ScheduleSystem, AKnobChangeHoldsUntilTheNextTransition) {
+    test::TzGuard tz("UTC");
+    Rig rig(night_off);
+    rig.at(local(2026, 6, 5, 23, 30));
+    ASSERT_FALSE(rig.power());
+    rig.tuning.layers.set_knob(ParamId::display_power, true);  // someone switches it on at night
+    rig.params.replace_with(rig.tuning.layers.compose());
+    EXPECT_TRUE(rig.power());
+    EXPECT_FALSE(rig.at(local(2026, 6, 6, 3, 0)));  // no transition: the knob holds
+    EXPECT_TRUE(rig.power());
+    EXPECT_TRUE(rig.at(local(2026, 6, 6, 7, 0)));  // the window ends: the knob value is forgotten
+    EXPECT_FALSE(rig.tuning.layers.knob(ParamId::display_power));
+    EXPECT_TRUE(rig.tuning.state_dirty);  // and the saved state forgets it too
+    EXPECT_TRUE(rig.power());
+    EXPECT_EQ(rig.params.source(ParamId::display_power), ParamSource::Default);
+    rig.at(local(2026, 6, 6, 23, 0));
+    EXPECT_FALSE(rig.power());  // the next night is off again
+
+    // A knob value on a parameter no transition's entry sets is kept.
+    rig.tuning.layers.set_knob(ParamId::rain_speed, 3.0f);
+    rig.at(local(2026, 6, 7, 7, 0));
+    EXPECT_TRUE(rig.tuning.layers.knob(ParamId::rain_speed));
+}
+
+TEST(ScheduleSystem, AReloadReevaluatesWithoutForgettingKnobs) {
+    test::TzGuard tz("UTC");
+    Rig rig(night_off);
+    rig.at(local(2026, 6, 5, 12, 0));
+    rig.tuning.layers.set_knob(ParamId::display_power, false);
+    ASSERT_TRUE(rig.tuning.layers.set_config(
+        test::parsed_config("[[schedule]]\nfrom = \"11:00\"\nto = \"13:00\"\nbrightness = 0.5\n")));
+    ++rig.tuning.config_generation;
+    EXPECT_TRUE(rig.at(local(2026, 6, 5, 12, 0) + 1));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::display_brightness>(), 0.5f);
+    EXPECT_TRUE(rig.tuning.layers.knob(ParamId::display_power));  // a reload is no transition
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, local(2026, 6, 5, 13, 0));
+}
+
+TEST(ScheduleSystem, TheWallClockGoingBackIsEvaluatedAgain) {
+    test::TzGuard tz("UTC");
+    Rig rig(night_off);
+    rig.at(local(2026, 6, 6, 8, 0));
+    EXPECT_TRUE(rig.power());
+    EXPECT_TRUE(rig.at(local(2026, 6, 6, 6, 0)));  // an NTP step back into the night
+    EXPECT_FALSE(rig.power());
+}
+
+}  // namespace
+}  // namespace puddle::systems
