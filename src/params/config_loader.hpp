@@ -27,6 +27,9 @@ struct Config {
     std::optional<std::string> preset;  // top-level `preset = "downpour"`
     int preset_line = 0;
     std::vector<KnobSpec> knobs;  // `[[knob]]` tables
+    // The saved state's top-level `remote = ["rain.intensity"]`: which of its values came from MQTT
+    // rather than a knob (ParamSource::Remote once restored).
+    std::vector<ParamId> remote;
 };
 
 // At most this many [[knob]] tables: each holds GPIO lines and a queue of events.

@@ -45,7 +45,7 @@ std::string format_params_markdown() {
 std::string format_effective(const Params& params, std::string_view preset) {
     std::string out = fmt::format(
         "# Effective values; after each, where it came from (default < preset < config < "
-        "knob < --set).\n# preset: {}\n",
+        "knob or remote < --set).\n# preset: {}\n",
         preset.empty() ? "none" : preset);
     for (const ParamDecl& d : param_decls()) {
         const ParamSource s = params.source(d.id);

@@ -12,8 +12,12 @@ std::string_view source_name(ParamSource s) {
             return "preset";
         case ParamSource::Config:
             return "config";
+        case ParamSource::Schedule:
+            return "schedule";
         case ParamSource::Knob:
             return "knob";
+        case ParamSource::Remote:
+            return "remote";
         case ParamSource::CommandLine:
             return "--set";
     }

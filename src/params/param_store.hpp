@@ -16,7 +16,9 @@
 namespace puddle::params {
 
 // Lowest to highest precedence; a value from a higher source is never overwritten by a lower one.
-enum class ParamSource : std::uint8_t { Default, Preset, Config, Knob, CommandLine };
+// Schedule is issue 19's; Remote (MQTT, issue 18) shares the knob level: the last of the two to set a
+// parameter holds it.
+enum class ParamSource : std::uint8_t { Default, Preset, Config, Schedule, Knob, Remote, CommandLine };
 std::string_view source_name(ParamSource s);
 
 class Params {
