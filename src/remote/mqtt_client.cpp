@@ -56,7 +56,6 @@ Result<std::unique_ptr<MqttClient>> MqttClient::start(ClientOptions options) {
         rc != MOSQ_ERR_SUCCESS)
         return fail("last will", rc);
     mosquitto_connect_callback_set(c->mosq_, on_connect);
-    mosquitto_disconnect_callback_set(c->mosq_, on_disconnect);
     mosquitto_message_callback_set(c->mosq_, on_message);
     MqttClient* self = c.get();
     c->thread_ = start_worker_thread([self](std::stop_token stop) { self->run(stop); });
@@ -114,10 +113,6 @@ void MqttClient::on_connect(mosquitto*, void* p, int rc) {
     self->outage_reported_ = false;
     self->connected_ = true;
     ++self->connections_;
-}
-
-void MqttClient::on_disconnect(mosquitto*, void* p, int) {
-    static_cast<MqttClient*>(p)->connected_ = false;
 }
 
 void MqttClient::on_message(mosquitto*, void* p, const mosquitto_message* m) {

@@ -79,7 +79,6 @@ private:
     void wait(std::stop_token& stop, double seconds);
     void warn_once(const std::string& line);
     static void on_connect(mosquitto*, void* self, int rc);
-    static void on_disconnect(mosquitto*, void* self, int rc);
     static void on_message(mosquitto*, void* self, const mosquitto_message* m);
 
     ClientOptions options_;

@@ -16,6 +16,7 @@
 #include "camera/mjpeg_decoder.hpp"
 #include "params/registry.hpp"
 #include "remote/remote_request.hpp"
+#include "remote/writable_patterns.hpp"
 #include "support/mosquitto_broker.hpp"
 #include "support/running_puddle.hpp"
 #include "support/test_support.hpp"
@@ -43,18 +44,26 @@ std::vector<std::string> puddle_args(const TempDir& dir) {
             "--fps-cap", "30"};
 }
 
-// The mean luma of a JPEG decoded at its expected size (fails the test when it does not decode).
-double jpeg_mean_luma(const std::string& jpeg, int width, int height) {
+// The mean luma of the four corners (a tenth of the width and height each) of a JPEG decoded at its
+// expected size; the test fails when it does not decode.
+double jpeg_corner_luma(const std::string& jpeg, int width, int height) {
     camera::MjpegDecoder decoder;
     auto r = decoder.decode(std::as_bytes(std::span(jpeg.data(), jpeg.size())), width, height);
     EXPECT_TRUE(r) << (r ? "" : r.error().message);
     if (!r) return -1;
     const auto px = decoder.rgba();
+    const int cw = width / 10, ch = height / 10;
     double sum = 0;
-    for (std::size_t i = 0; i + 3 < px.size(); i += 4)
-        sum += 0.2126 * std::to_integer<int>(px[i]) + 0.7152 * std::to_integer<int>(px[i + 1]) +
-               0.0722 * std::to_integer<int>(px[i + 2]);
-    return sum / static_cast<double>(px.size() / 4);
+    int n = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if ((x >= cw && x < width - cw) || (y >= ch && y < height - ch)) continue;
+            const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
+            sum += 0.2126 * std::to_integer<int>(px[i]) + 0.7152 * std::to_integer<int>(px[i + 1]) +
+                   0.0722 * std::to_integer<int>(px[i + 2]);
+            ++n;
+        }
+    return sum / n;
 }
 
 class RemoteEndToEnd : public ::testing::Test {
@@ -88,30 +97,32 @@ protected:
 
 TEST_F(RemoteEndToEnd, SetChangesThePictureAndIsSavedAsRemote) {
     start_puddle();
-    ASSERT_TRUE(wait_state("environment.exposure", "0"));
-    client->publish(topic("command"), "screenshot");
-    const auto before = client->wait_for(topic("screenshot"));
-    ASSERT_TRUE(before) << puddle->log();
-
-    client->publish(topic("set/environment.exposure"), "-10");
-    ASSERT_TRUE(wait_state("environment.exposure", "-10")) << puddle->log();
-    client->publish(topic("command"), "screenshot");
-    ASSERT_TRUE(client->wait_for(topic("screenshot"), [&](const std::string& p) { return p != *before; }))
-        << puddle->log();
-    const auto shots = client->received(topic("screenshot"));
-    const double lit = jpeg_mean_luma(shots.front(), 160, 90), dark = jpeg_mean_luma(shots.back(), 160, 90);
-    EXPECT_LT(dark, lit * 0.6) << "exposure -10 stops did not darken the picture: " << lit << " -> " << dark;
+    // A screenshot with no vignette, then one with the strongest: the corners darken.
+    auto shot = [&](const std::string& vignette) {
+        client->publish(topic("set/look.vignette"), vignette);
+        EXPECT_TRUE(wait_state("look.vignette", vignette)) << puddle->log();
+        const std::size_t before = client->received(topic("screenshot")).size();
+        client->publish(topic("command"), "screenshot");
+        const auto jpeg = client->wait_for_more(topic("screenshot"), before);
+        EXPECT_TRUE(jpeg) << puddle->log();
+        return jpeg.value_or("");
+    };
+    const std::string plain = shot("0"), dark = shot("1.4");
+    const double plain_corner = jpeg_corner_luma(plain, 160, 90),
+                 dark_corner = jpeg_corner_luma(dark, 160, 90);
+    EXPECT_LT(dark_corner, plain_corner * 0.6)
+        << "look.vignette 1.4 did not darken the corners: " << plain_corner << " -> " << dark_corner;
     const auto doc = json::parse(client->latest()[topic("state")]);
-    EXPECT_EQ(doc["environment.exposure"], -10);
+    EXPECT_EQ(doc["look.vignette"], 1.4);
 
     EXPECT_EQ(puddle->stop(), 0);
     const std::string state = read_file(dir / "state.toml");
-    EXPECT_NE(state.find("remote = [\"environment.exposure\"]"), std::string::npos) << state;
+    EXPECT_NE(state.find("remote = [\"look.vignette\"]"), std::string::npos) << state;
     const auto printed =
         run_puddle(fmt::format("--config {} --state {} --print-config", (dir / "puddle.toml").string(),
                                (dir / "state.toml").string()));
-    EXPECT_NE(printed.output.find("environment.exposure"), std::string::npos);
-    EXPECT_NE(printed.output.find("= -10                      # remote"), std::string::npos)
+    EXPECT_NE(printed.output.find("look.vignette              = 1.4                      # remote"),
+              std::string::npos)
         << printed.output;
 }
 
@@ -124,7 +135,7 @@ TEST_F(RemoteEndToEnd, BadMessagesAreRefusedWithAnErrorReplyAndNothingApplies) {
     const std::vector<Case> cases{
         {topic("set/rain.intensity"), "9", "out of range"},
         {topic("set/rain.intensty"), "0.5",
-         "unknown parameter 'rain.intensty' (did you mean 'rain.intensity')"},
+         "unknown parameter 'rain.intensty' (did you mean 'rain.intensity'?)"},
         {topic("set/display.card"), "/dev/dri/card0", "display.card cannot be set remotely"},
         {topic("set/remote.host"), "evil.example", "remote.host cannot be set remotely"},
         {topic("set/environment.image"), "/etc/shadow", "not in remote.writable"},
@@ -200,18 +211,22 @@ TEST_F(RemoteEndToEnd, DiscoveryConfigsAreValidAndTheirRangesAreTheRegistrys) {
     }
     EXPECT_EQ(components,
               (std::set<std::string>{"button", "image", "number", "select", "sensor", "switch", "text"}));
-    EXPECT_GT(numbers, 20);
-    EXPECT_GT(controls, numbers);
+    // One control per writable parameter (remote.writable's default), plus the preset and the commands.
+    const remote::WritablePatterns writable(
+        std::get<std::string>(params::decl(params::ParamId::remote_writable).default_value));
+    int writable_numbers = 0, writable_all = 0;
+    for (const params::ParamDecl& d : params::param_decls()) {
+        if (!writable.allows(d)) continue;
+        ++writable_all;
+        writable_numbers += d.kind == params::ParamKind::Int || d.kind == params::ParamKind::Float;
+    }
+    EXPECT_EQ(numbers, writable_numbers);
+    EXPECT_EQ(controls, writable_all + 1 + 5);
 
     // Home Assistant restarting: discovery again.
     const std::size_t before = client->received("homeassistant/image/puddle-e2e/screenshot/config").size();
     client->publish("homeassistant/status", "online");
-    EXPECT_TRUE(client->wait_for("homeassistant/image/puddle-e2e/screenshot/config", {}, 30));
-    for (int i = 0;
-         i < 100 && client->received("homeassistant/image/puddle-e2e/screenshot/config").size() == before;
-         ++i)
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    EXPECT_EQ(client->received("homeassistant/image/puddle-e2e/screenshot/config").size(), before + 1);
+    EXPECT_TRUE(client->wait_for_more("homeassistant/image/puddle-e2e/screenshot/config", before));
 
     // remote.enabled = false, then a run: the configs are cleared (empty retained payloads).
     EXPECT_EQ(puddle->stop(), 0);

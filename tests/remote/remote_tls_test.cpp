@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <pwd.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,6 +15,12 @@
 
 namespace puddle::test {
 namespace {
+
+// Mosquitto started as root drops to the user `mosquitto`, which cannot read the test's key: stay this user.
+std::string user_name() {
+    const passwd* pw = getpwuid(getuid());
+    return pw ? pw->pw_name : "root";
+}
 
 class RemoteTls : public ::testing::Test {
 protected:
@@ -36,9 +43,9 @@ protected:
         broker = std::make_unique<MosquittoBroker>(
             port,
             fmt::format("listener {} 127.0.0.1\ncafile {}\ncertfile {}\nkeyfile {}\nallow_anonymous false\n"
-                        "password_file {}\n",
+                        "password_file {}\nuser {}\n",
                         port, (dir / "ca.crt").string(), (dir / "server.crt").string(),
-                        (dir / "server.key").string(), (dir / "broker.passwd").string()));
+                        (dir / "server.key").string(), (dir / "broker.passwd").string(), user_name()));
         ASSERT_TRUE(broker->running()) << broker->log();
     }
     void write_config(const std::string& password) {

@@ -156,6 +156,17 @@ std::optional<std::string> MqttTestClient::wait_for(const std::string& topic,
     return found;
 }
 
+std::optional<std::string> MqttTestClient::wait_for_more(const std::string& topic, std::size_t seen,
+                                                         double timeout_s) {
+    std::unique_lock lock(mutex_);
+    const bool more = arrived_.wait_for(lock, std::chrono::duration<double>(timeout_s), [&] {
+        auto it = messages_.find(topic);
+        return it != messages_.end() && it->second.size() > seen;
+    });
+    if (!more) return std::nullopt;
+    return messages_[topic].back();
+}
+
 std::vector<std::string> MqttTestClient::received(const std::string& topic) {
     std::lock_guard lock(mutex_);
     auto it = messages_.find(topic);

@@ -63,10 +63,14 @@ public:
     bool connected() const { return connected_; }
     void subscribe(const std::string& pattern);
     void publish(const std::string& topic, const std::string& payload, bool retain = false);
-    // Waits up to `timeout_s` until a message on `topic` satisfies `accept`; returns its payload.
+    // Waits up to `timeout_s` until a message on `topic` satisfies `accept` (called with the client's lock
+    // held: it must not call the client); returns its payload.
     std::optional<std::string> wait_for(const std::string& topic,
                                         const std::function<bool(const std::string&)>& accept = {},
                                         double timeout_s = 30);
+    // Waits up to `timeout_s` until `topic` has had more than `seen` messages; returns the newest.
+    std::optional<std::string> wait_for_more(const std::string& topic, std::size_t seen,
+                                             double timeout_s = 30);
     // Every message received so far on `topic`, oldest first.
     std::vector<std::string> received(const std::string& topic);
     // The newest payload of every topic received so far.
