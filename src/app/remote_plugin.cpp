@@ -166,8 +166,9 @@ void remote_publish_system(RemoteControl& r, const params::Params& params, const
 Result<void> add_remote_plugin(ecs::World& world, ecs::Schedule& schedule) {
     const params::Params& params = world.resource<params::Params>();
     const bool enabled = params.get<ParamId::remote_enabled>();
-    const bool clear_only =
-        !enabled && params.source(ParamId::remote_enabled) != params::ParamSource::Default;
+    // A screen leaving the fleet: enabled = false with a broker still named (the shipped config says
+    // enabled = false and names none, so an ordinary install never connects).
+    const bool clear_only = !enabled && params.source(ParamId::remote_host) != params::ParamSource::Default;
     if (!enabled && !clear_only) return {};
     auto settings = remote::remote_settings(params);
     if (!settings) return settings.error();

@@ -32,8 +32,8 @@ namespace puddle::app {
 struct RemoteControl {
     remote::RemoteSettings settings;
     std::unique_ptr<remote::MqttClient> client;
-    bool clear_only =
-        false;  // remote.enabled = false in the config: clear the discovery configs, nothing else
+    // remote.enabled = false with remote.host set: clear the discovery configs, nothing else.
+    bool clear_only = false;
     std::vector<remote::Inbound> inbox;  // reserved once: draining allocates nothing
     std::uint64_t connections_seen = 0;
     std::unique_ptr<params::Params> published;  // what the state topics hold; null: publish everything
@@ -57,9 +57,9 @@ void remote_publish_system(RemoteControl& remote, const params::Params& params,
                            const systems::LiveTuning& tuning, FrameCapture& capture);
 
 // Needs Params and LiveTuning in the world (and the puddle's CameraFeed, when there is one). With
-// remote.enabled it starts the client and registers the systems above; with remote.enabled = false
-// written in the config, it connects only to clear this screen's discovery configs; left at its default,
-// it does nothing. Errors: remote_settings()'s (a world-readable password file...), exit code 2.
+// remote.enabled it starts the client and registers the systems above; with remote.enabled = false and
+// remote.host set, it connects only to clear this screen's discovery configs; otherwise it does nothing.
+// Errors: remote_settings()'s (a world-readable password file...), exit code 2.
 Result<void> add_remote_plugin(ecs::World& world, ecs::Schedule& schedule);
 
 }  // namespace puddle::app

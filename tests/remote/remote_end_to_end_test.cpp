@@ -228,12 +228,12 @@ TEST_F(RemoteEndToEnd, DiscoveryConfigsAreValidAndTheirRangesAreTheRegistrys) {
     client->publish("homeassistant/status", "online");
     EXPECT_TRUE(client->wait_for_more("homeassistant/image/puddle-e2e/screenshot/config", before));
 
-    // remote.enabled = false, then a run: the configs are cleared (empty retained payloads).
+    // remote.enabled = false with the broker named, then a run: the configs are cleared (empty retained
+    // payloads).
     EXPECT_EQ(puddle->stop(), 0);
-    dir.write(
-        "puddle.toml",
-        fmt::format("[remote]\nenabled = false\nport = {}\nprefix = \"{}\"\nclient_id = \"puddle-e2e\"\n",
-                    broker->port(), prefix));
+    dir.write("puddle.toml", fmt::format("[remote]\nenabled = false\nhost = \"localhost\"\nport = {}\nprefix "
+                                         "= \"{}\"\nclient_id = \"puddle-e2e\"\n",
+                                         broker->port(), prefix));
     Running clearing(puddle_args(dir), dir / "clear.log");
     ASSERT_TRUE(clearing.wait_for("discovery configs cleared")) << clearing.log();
     EXPECT_EQ(clearing.stop(), 0);

@@ -32,6 +32,13 @@ Result<Request> parse(const std::string& topic, const std::string& payload,
     return parse_request(s, Inbound{topic, payload, payload.size()});
 }
 
+// The request of a message that must parse.
+Request ok(const std::string& topic, const std::string& payload) {
+    auto r = parse(topic, payload);
+    EXPECT_TRUE(r) << topic << ": " << r.error().message;
+    return r ? std::move(r).value() : Request(Ignored{});
+}
+
 TEST(WritablePatterns, PrefixPatternsAndNamesButNeverDeviceSettings) {
     const WritablePatterns w("rain.*, look.vignette ,, *");
     EXPECT_TRUE(w.allows(params::decl(ParamId::rain_intensity)));
@@ -76,12 +83,12 @@ TEST(RemoteRequest, ErrorsNameTheTopicAndWhatIsAllowed) {
 }
 
 TEST(RemoteRequest, CommandsPresetsAndHomeAssistant) {
-    EXPECT_EQ(std::get<Command>(*parse("puddle/a1/command", "next-preset")), Command::NextPreset);
-    EXPECT_EQ(std::get<Command>(*parse("puddle/all/command", "screenshot")), Command::Screenshot);
-    EXPECT_EQ(std::get<SelectPreset>(*parse("puddle/a1/preset/set", "downpour")).name, "downpour");
-    EXPECT_EQ(std::get<SelectPreset>(*parse("puddle/a1/preset/set", "none")).name, "");
-    EXPECT_TRUE(std::holds_alternative<HomeAssistantOnline>(*parse("homeassistant/status", "online")));
-    EXPECT_TRUE(std::holds_alternative<Ignored>(*parse("homeassistant/status", "offline")));
+    EXPECT_EQ(std::get<Command>(ok("puddle/a1/command", "next-preset")), Command::NextPreset);
+    EXPECT_EQ(std::get<Command>(ok("puddle/all/command", "screenshot")), Command::Screenshot);
+    EXPECT_EQ(std::get<SelectPreset>(ok("puddle/a1/preset/set", "downpour")).name, "downpour");
+    EXPECT_EQ(std::get<SelectPreset>(ok("puddle/a1/preset/set", "none")).name, "");
+    EXPECT_TRUE(std::holds_alternative<HomeAssistantOnline>(ok("homeassistant/status", "online")));
+    EXPECT_TRUE(std::holds_alternative<Ignored>(ok("homeassistant/status", "offline")));
 }
 
 TEST(RemoteSettings, AWorldReadablePasswordFileIsRefused) {
