@@ -12,6 +12,8 @@ packages=(
     libopenimageio-dev                                    # reading images (libpuddle-images.so)
     libpng-dev                                            # writing the screenshot PNG
     libgpiod-dev libv4l-dev libjpeg-dev                   # knobs and camera
+    libmosquitto-dev nlohmann-json3-dev                   # remote control over MQTT (libmosquitto1 at run time)
+    mosquitto mosquitto-clients openssl                   # the remote tests: a real broker, clients, a test CA
     libgtest-dev libgmock-dev libbenchmark-dev            # tests and puddle-bench
     xvfb xauth                                            # the window backend's test runs under Xvfb
     dpkg-dev systemd                                      # the .deb (cpack, dpkg-shlibdeps); unit checks

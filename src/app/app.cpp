@@ -15,6 +15,7 @@
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
 #include "app/process_setup.hpp"
+#include "app/remote_plugin.hpp"
 #include "app/service_notify.hpp"
 #include "app/service_plugin.hpp"
 #include "app/signals.hpp"
@@ -112,9 +113,13 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
         spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
     }
     if (auto r = io::check_gpio_spec(o.gpio); !r) return r.error();
-    if (!tuning.layers.config().knobs.empty()) {
+    // Knob and remote values share the state file (ParamLayers); without either there is none.
+    const bool remote = tuning.layers.compose().get<params::ParamId::remote_enabled>();
+    if (!tuning.layers.config().knobs.empty() || remote) {
         tuning.state.emplace(o.state_path.empty() ? params::StateStore::default_path() : o.state_path);
         restore_saved_state(tuning, read_only);
+    }
+    if (!tuning.layers.config().knobs.empty()) {
         auto gpio = io::make_gpio_backend(o.gpio);
         if (!gpio) return gpio.error();
         tuning.gpio = std::move(*gpio);
@@ -132,6 +137,7 @@ std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signal
         systems::add_schedule,
         add_display_power,
         systems::add_puddle_plugin,
+        add_remote_plugin,
     };
 }
 

@@ -56,6 +56,26 @@ Result<Parsed> parse_all(std::string_view text, std::string_view path, int* synt
                 config.preset = *name, config.preset_line = toml_line(section_node);
             continue;
         }
+        if (section_key.str() == "remote" && !section_node.is_table()) {
+            const toml::array* names = section_node.as_array();
+            bool ok = names != nullptr;
+            if (names)
+                for (const toml::node& n : *names) {
+                    const auto name = n.value_exact<std::string>();
+                    const ParamDecl* d = name ? find_param(*name) : nullptr;
+                    if (d)
+                        config.remote.push_back(d->id);
+                    else
+                        ok = false;
+                }
+            if (!ok)
+                problem(toml_line(section_node),
+                        make_error(ExitCode::Config,
+                                   "config: {}:{}: remote must list parameter names, e.g. remote = "
+                                   "[\"rain.intensity\"]",
+                                   path, toml_line(section_node)));
+            continue;
+        }
         if (section_key.str() == "knob") {
             const toml::array* knobs = section_node.as_array();
             if (!knobs || !knobs->is_array_of_tables()) {

@@ -31,6 +31,9 @@ struct Config {
     std::vector<KnobSpec> knobs;  // `[[knob]]` tables
     std::vector<ScheduleEntry> schedule;      // `[[schedule]]` tables, in file order
     std::optional<ScheduleLocation> location;  // `[location]`, required when an entry uses sunrise or sunset
+    // The saved state's top-level `remote = ["rain.intensity"]`: which of its values came from MQTT
+    // rather than a knob (ParamSource::Remote once restored).
+    std::vector<ParamId> remote;
 };
 
 // At most this many [[knob]] tables: each holds GPIO lines and a queue of events.

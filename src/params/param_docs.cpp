@@ -46,7 +46,7 @@ std::string format_effective(const Params& params, std::string_view preset,
                              std::span<const int> schedule_entries) {
     std::string out = fmt::format(
         "# Effective values; after each, where it came from (default < preset < config < schedule < "
-        "knob < --set).\n# preset: {}\n",
+        "knob or remote < --set).\n# preset: {}\n",
         preset.empty() ? "none" : preset);
     for (const ParamDecl& d : param_decls()) {
         const ParamSource s = params.source(d.id);

@@ -81,14 +81,23 @@ Result<void> ParamLayers::select_preset(const std::string& name) {
 
 void ParamLayers::set_knob(ParamId id, ParamValue value) {
     knob_[static_cast<std::size_t>(id)] = clamp_to_range(decl(id), std::move(value));
+    remote_[static_cast<std::size_t>(id)] = false;
 }
 
 void ParamLayers::clear_knob(ParamId id) {
     knob_[static_cast<std::size_t>(id)].reset();
+    remote_[static_cast<std::size_t>(id)] = false;
+}
+
+void ParamLayers::set_remote(ParamId id, ParamValue value) {
+    set_knob(id, std::move(value));
+    remote_[static_cast<std::size_t>(id)] = true;
 }
 
 Result<void> ParamLayers::restore_state(const Config& state) {
     for (const ConfigEntry& e : state.entries) set_knob(e.id, e.value);
+    for (const ParamId id : state.remote)
+        if (knob_[static_cast<std::size_t>(id)]) remote_[static_cast<std::size_t>(id)] = true;
     if (state.preset && *state.preset != knob_preset_) {
         if (auto r = select_preset(*state.preset); !r)
             return make_error(ExitCode::Config, "state: {}: saved preset '{}' is gone; using the config's",
@@ -100,6 +109,11 @@ Result<void> ParamLayers::restore_state(const Config& state) {
 std::string ParamLayers::state_text() const {
     std::string out = "# Written by puddle: what the knobs changed. Delete this file to forget it.\n";
     if (!knob_preset_.empty()) out += fmt::format("preset = \"{}\"\n", knob_preset_);
+    std::string remote;  // which values came from the broker (Config::remote)
+    for (const ParamDecl& d : param_decls())
+        if (remote_[static_cast<std::size_t>(d.id)] && knob_[static_cast<std::size_t>(d.id)])
+            remote += fmt::format("{}\"{}\"", remote.empty() ? "" : ", ", d.name);
+    if (!remote.empty()) out += fmt::format("remote = [{}]\n", remote);
     std::string_view section;
     for (const ParamDecl& d : param_decls()) {
         const auto& v = knob_[static_cast<std::size_t>(d.id)];
@@ -126,6 +140,7 @@ bool ParamLayers::clear_knobs_set_by(int entry) {
     bool held = false;
     auto clear = [&](ParamId id) {
         held |= std::exchange(knob_[static_cast<std::size_t>(id)], std::nullopt).has_value();
+        remote_[static_cast<std::size_t>(id)] = false;  // a remote value is forgotten the same way
     };
     for (const ConfigEntry& e : schedule_presets_[static_cast<std::size_t>(entry)].entries) clear(e.id);
     for (const ScheduledValue& v : config_.schedule[static_cast<std::size_t>(entry)].values) clear(v.id);
@@ -155,7 +170,9 @@ Params ParamLayers::compose() const {
             p.set(v.id, v.value, ParamSource::Schedule);
     }
     for (const ParamDecl& d : param_decls())
-        if (const auto& v = knob_[static_cast<std::size_t>(d.id)]) p.set(d.id, *v, ParamSource::Knob);
+        if (const auto& v = knob_[static_cast<std::size_t>(d.id)])
+            p.set(d.id, *v,
+                  remote_[static_cast<std::size_t>(d.id)] ? ParamSource::Remote : ParamSource::Knob);
     for (const ConfigEntry& e : command_line_) p.set(e.id, e.value, ParamSource::CommandLine);
     return p;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // Where values come from while the program runs, lowest to highest precedence:
-//   built-in defaults < preset < config file < schedule < knob state < --set
+//   built-in defaults < preset < config file < schedule < knob and remote state < --set
+// A remote (MQTT) value shares the knob level: whichever set the parameter last holds it, and both are
+// saved in the same state file.
 // Each source is kept as its own layer; any change recomposes the effective Params from all of them, so
 // a reloaded config never overwrites a knob's value and a removed config line falls back to the preset
 // or the default.
@@ -36,6 +38,9 @@ public:
     // Knob state. The value is clamped to the parameter's registered range.
     void set_knob(ParamId id, ParamValue value);
     void clear_knob(ParamId id);
+    // A value from the broker (validated by the caller, as the config's are): the knob level, source Remote.
+    void set_remote(ParamId id, ParamValue value);
+    bool is_remote(ParamId id) const { return remote_[static_cast<std::size_t>(id)]; }
     const std::optional<ParamValue>& knob(ParamId id) const { return knob_[static_cast<std::size_t>(id)]; }
     // Restores saved knob state (a state file: `preset =` and parameter values); unknown presets are
     // dropped with the returned warning.
@@ -66,6 +71,7 @@ private:
     Config preset_;
     std::string knob_preset_;
     std::array<std::optional<ParamValue>, param_count> knob_{};
+    std::array<bool, param_count> remote_{};  // knob_[id] came from the broker
     std::vector<ConfigEntry> command_line_;
     std::vector<Config> schedule_presets_;  // each entry's preset (empty without one), as config_.schedule
     std::vector<int> schedule_active_;

@@ -16,7 +16,8 @@
 namespace puddle::params {
 
 // Lowest to highest precedence; a value from a higher source is never overwritten by a lower one.
-// Schedule: the config's [[schedule]] entries active now. Remote: issue 18's remote control (MQTT).
+// Schedule: the config's [[schedule]] entries active now. Remote (MQTT) shares the knob level: the last
+// of the two to set a parameter holds it.
 enum class ParamSource : std::uint8_t { Default, Preset, Config, Schedule, Knob, Remote, CommandLine };
 std::string_view source_name(ParamSource s);
 

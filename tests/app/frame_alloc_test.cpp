@@ -1,6 +1,7 @@
 // The steady-state frame loop allocates nothing (issue 7): global operator new/delete are replaced in
 // this executable by counting ones, and a few hundred headless frames after a warm-up must count zero.
-// The binary's own loop adds live tuning and the --stats ring buffer, so both run here too.
+// The binary's own loop adds live tuning and the --stats ring buffer, so both run here too; remote
+// control (issue 18) runs connected to a real broker, its network thread counted too.
 //
 // Only C++ allocations are counted (operator new, which our code, the standard library, spdlog and fmt
 // go through); Mesa's own C allocations inside the GL driver are the driver's business.
@@ -13,11 +14,14 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <thread>
 
 #include "app/display_power.hpp"
 #include "app/frame_stats.hpp"
 #include "params/config_loader.hpp"
+#include "app/remote_plugin.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/mosquitto_broker.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
@@ -199,6 +203,43 @@ TEST(FrameAllocation, SteadyStateFramesWithAScheduleAllocateNothing) {
     app::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);
     EXPECT_FLOAT_EQ((*engine)->params().get<params::ParamId::display_brightness>(), 0.5f);
+}
+
+// Remote control connected to a broker: after the first publishes, a frame with nothing arriving drains
+// an empty queue and compares revisions, and allocates nothing (health is due once an hour here).
+TEST(FrameAllocation, SteadyStateFramesWithRemoteControlAllocateNothing) {
+    if (!mosquitto_available()) GTEST_SKIP() << no_mosquitto;
+    MosquittoBroker broker;
+    ASSERT_TRUE(broker.running()) << broker.log();
+    params::Params p;
+    using params::ParamId, params::ParamSource;
+    p.set<ParamId::remote_enabled>(true, ParamSource::Config);
+    p.set<ParamId::remote_port>(broker.port(), ParamSource::Config);
+    p.set<ParamId::remote_prefix>("puddle/alloc", ParamSource::Config);
+    p.set<ParamId::remote_health_interval>(3600.0f, ParamSource::Config);
+    platform::DisplayOptions display;
+    display.backend = platform::BackendKind::Headless;
+    display.size = {160, 90};
+    auto engine =
+        app::Engine::create(p, display, {},
+                            {[](ecs::World& world, ecs::Schedule& schedule) {
+                                 return systems::add_live_tuning(
+                                     world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
+                             },
+                             systems::add_puddle_plugin, app::add_remote_plugin});
+    ASSERT_TRUE(engine.ok()) << engine.error().message;
+    const app::RemoteControl& remote = (*engine)->world().resource<app::RemoteControl>();
+    for (int n = 0; n < 3000 && remote.connections_seen == 0; ++n) {
+        ASSERT_TRUE((*engine)->frame(1.0 / 60.0).ok());
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_GT(remote.connections_seen, 0u) << "never connected to the broker";
+    for (int n = 0; n < 20; ++n) {  // the state and discovery go out on the network thread
+        ASSERT_TRUE((*engine)->frame(1.0 / 60.0).ok());
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    app::FrameStats stats(0.5);
+    expect_no_allocation_in_frames(**engine, stats);
 }
 
 TEST(FrameAllocation, StatsReportAllocatesNothing) {

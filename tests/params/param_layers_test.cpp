@@ -132,3 +132,43 @@ TEST(ConfigKnobs, AtMostSixtyFourKnobs) {
 
 }  // namespace
 }  // namespace puddle::params
+
+namespace puddle::params {
+namespace {
+
+// Remote values share the knob level (the last writer holds a parameter) and are saved in the same state
+// file, marked so that a restart restores them as Remote (issue 18).
+TEST(ParamLayersRemote, RemoteValuesAreTheKnobLevelAndSurviveTheStateFile) {
+    ParamLayers layers(Presets::load({}), {});
+    layers.set_remote(ParamId::rain_intensity, 0.7f);
+    layers.set_knob(ParamId::look_vignette, 1.0f);
+    Params p = layers.compose();
+    EXPECT_EQ(p.source(ParamId::rain_intensity), ParamSource::Remote);
+    EXPECT_EQ(p.source(ParamId::look_vignette), ParamSource::Knob);
+    EXPECT_EQ(source_name(ParamSource::Remote), "remote");
+
+    const std::string text = layers.state_text();
+    EXPECT_NE(text.find("remote = [\"rain.intensity\"]\n"), std::string::npos) << text;
+    auto state = parse_config(text, "state.toml");
+    ASSERT_TRUE(state) << state.error().message;
+    ParamLayers restored(Presets::load({}), {});
+    ASSERT_TRUE(restored.restore_state(*state));
+    p = restored.compose();
+    EXPECT_EQ(p.source(ParamId::rain_intensity), ParamSource::Remote);
+    EXPECT_EQ(p.get<ParamId::rain_intensity>(), 0.7f);
+    EXPECT_EQ(p.source(ParamId::look_vignette), ParamSource::Knob);
+
+    restored.set_knob(ParamId::rain_intensity, 0.2f);  // a knob turned after the broker: the knob holds it
+    EXPECT_EQ(restored.compose().source(ParamId::rain_intensity), ParamSource::Knob);
+    EXPECT_EQ(restored.state_text().find("remote ="), std::string::npos);
+}
+
+TEST(ParamLayersRemote, SourcesKeepTheirOrder) {
+    EXPECT_LT(ParamSource::Config, ParamSource::Schedule);
+    EXPECT_LT(ParamSource::Schedule, ParamSource::Knob);
+    EXPECT_LT(ParamSource::Knob, ParamSource::Remote);
+    EXPECT_LT(ParamSource::Remote, ParamSource::CommandLine);
+}
+
+}  // namespace
+}  // namespace puddle::params

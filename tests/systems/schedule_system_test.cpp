@@ -184,6 +184,30 @@ TEST(ScheduleSystem, AKnobChangeHoldsUntilTheNextTransition) {
     EXPECT_TRUE(rig.tuning.layers.knob(ParamId::rain_speed));
 }
 
+// A value set over MQTT shares the knob level, and holds the same way: until the next transition of an
+// entry that sets it, then it is forgotten, in the layers and in the saved state.
+TEST(ScheduleSystem, ARemoteChangeHoldsUntilTheNextTransitionToo) {
+    test::TzGuard tz("UTC");
+    Rig rig(R"(
+[[schedule]]
+from = "18:00"
+to = "22:00"
+set = { "rain.intensity" = 0.8 }
+)");
+    rig.at(local(2026, 6, 5, 19, 0));
+    ASSERT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.8f);
+    rig.tuning.layers.set_remote(ParamId::rain_intensity, 0.1f);
+    rig.params.replace_with(rig.tuning.layers.compose());
+    EXPECT_EQ(rig.params.source(ParamId::rain_intensity), ParamSource::Remote);
+    EXPECT_FALSE(rig.at(local(2026, 6, 5, 21, 0)));
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.1f) << "no transition: the remote value holds";
+    EXPECT_TRUE(rig.at(local(2026, 6, 5, 22, 0)));
+    EXPECT_FALSE(rig.tuning.layers.knob(ParamId::rain_intensity));
+    EXPECT_FALSE(rig.tuning.layers.is_remote(ParamId::rain_intensity));
+    EXPECT_EQ(rig.tuning.layers.state_text().find("rain.intensity"), std::string::npos);
+    EXPECT_EQ(rig.params.source(ParamId::rain_intensity), ParamSource::Default);
+}
+
 TEST(ScheduleSystem, AReloadReevaluatesWithoutForgettingKnobs) {
     test::TzGuard tz("UTC");
     Rig rig(night_off);

@@ -1,0 +1,36 @@
+#pragma once
+// Home Assistant MQTT discovery (https://www.home-assistant.io/integrations/mqtt/#mqtt-discovery): one
+// retained config per entity under homeassistant/<component>/<node id>/<object id>/config, all naming
+// the same device (identifiers, name, model, software version), generated from the registry:
+//   number  an int or float parameter (min, max, step and unit from its declaration)
+//   select  an enum parameter, and the preset
+//   switch  a bool parameter
+//   text    a text or three-number parameter (three numbers are written "x,y,z")
+//   button  each command of <prefix>/command
+//   sensor  each health field (health.hpp), diagnostic
+//   image   the screenshot topic (JPEG)
+// Only writable parameters (remote.writable) become controls. An empty retained payload on the same
+// topics removes the entities (clear_discovery).
+
+#include <string>
+#include <vector>
+
+#include "remote/mqtt_client.hpp"
+#include "remote/remote_settings.hpp"
+
+namespace puddle::remote {
+
+inline constexpr const char* discovery_root = "homeassistant";
+
+// The client id (default puddle-<device id>), with every character other than letters, digits, '_' and
+// '-' as '_': unique per screen, as the broker already requires of client ids.
+std::string node_id(const RemoteSettings& settings);
+
+// Every discovery config, retained. `presets`: the preset names the select offers ("none" is added).
+std::vector<Outbound> discovery_configs(const RemoteSettings& settings,
+                                        const std::vector<std::string>& presets, std::string_view version);
+// The same topics with empty retained payloads: Home Assistant removes the entities.
+std::vector<Outbound> clear_discovery(const RemoteSettings& settings, const std::vector<std::string>& presets,
+                                      std::string_view version);
+
+}  // namespace puddle::remote

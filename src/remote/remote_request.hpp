@@ -1,0 +1,51 @@
+#pragma once
+// A message from the broker, checked the way the config is (registry.hpp's parse_value: the same value
+// syntax as --set, the kind and range of the declaration) plus the writable patterns, turned into what
+// it asks for. A bad message is an error naming its topic, and nothing of it applies.
+
+#include <cstddef>
+#include <string>
+#include <variant>
+
+#include "params/registry.hpp"
+#include "remote/remote_settings.hpp"
+#include "util/result.hpp"
+
+namespace puddle::remote {
+
+// Payloads longer than this are refused unread (a parameter's value, a preset's name and a command are
+// short).
+inline constexpr std::size_t max_payload_bytes = 4096;
+
+// As the network thread hands it over. `size` is the payload's size on the wire; an oversized payload
+// arrives with `payload` empty.
+struct Inbound {
+    std::string topic;
+    std::string payload;
+    std::size_t size = 0;
+};
+
+struct SetParam {
+    params::ParamId id;
+    params::ParamValue value;
+};
+struct SelectPreset {
+    std::string name;  // "" (or "none"): the config's preset
+};
+enum class Command { NextPreset, PreviousPreset, Save, Screenshot, Reload };
+struct HomeAssistantOnline {};  // homeassistant/status = online: publish discovery again
+struct Ignored {};              // homeassistant/status = offline
+using Request = std::variant<SetParam, SelectPreset, Command, HomeAssistantOnline, Ignored>;
+
+// Topics: <prefix>/set/<parameter>, <prefix>/preset/set and <prefix>/command, under `settings.prefix`
+// or `settings.fleet_prefix`, and homeassistant/status. Errors (one line, "remote: TOPIC: why"): payload
+// too large, a topic that is none of these, an unknown parameter (with the nearest name), one that is not
+// writable (remote.writable), a value of the wrong kind or out of range (what is allowed), an unknown
+// command (the list).
+Result<Request> parse_request(const RemoteSettings& settings, const Inbound& message);
+
+// The commands as spelled on <prefix>/command, in Command's order.
+inline constexpr const char* command_names[] = {"next-preset", "previous-preset", "save", "screenshot",
+                                                "reload"};
+
+}  // namespace puddle::remote

@@ -1,0 +1,160 @@
+// src/remote without a broker: which parameters are writable, how a message becomes a request or an
+// error, the password file rule, and the discovery configs against the registry.
+
+#include "remote/remote_request.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <nlohmann/json.hpp>
+
+#include "remote/discovery.hpp"
+#include "remote/state_json.hpp"
+#include "support/test_support.hpp"
+
+namespace puddle::remote {
+namespace {
+
+using params::ParamId;
+
+RemoteSettings settings(const std::string& writable = "rain.*, look.vignette") {
+    RemoteSettings s;
+    s.prefix = "puddle/a1";
+    s.fleet_prefix = "puddle/all";
+    s.client_id = "puddle-a1";
+    s.device_id = "a1";
+    s.writable = WritablePatterns(writable);
+    return s;
+}
+
+Result<Request> parse(const std::string& topic, const std::string& payload,
+                      const RemoteSettings& s = settings()) {
+    return parse_request(s, Inbound{topic, payload, payload.size()});
+}
+
+// The request of a message that must parse.
+Request ok(const std::string& topic, const std::string& payload) {
+    auto r = parse(topic, payload);
+    EXPECT_TRUE(r) << topic << ": " << r.error().message;
+    return r ? std::move(r).value() : Request(Ignored{});
+}
+
+TEST(WritablePatterns, PrefixPatternsAndNamesButNeverDeviceSettings) {
+    const WritablePatterns w("rain.*, look.vignette ,, *");
+    EXPECT_TRUE(w.allows(params::decl(ParamId::rain_intensity)));
+    EXPECT_TRUE(w.allows(params::decl(ParamId::look_vignette)));
+    EXPECT_TRUE(w.allows(params::decl(ParamId::water_tint)));  // "*"
+    EXPECT_FALSE(w.allows(params::decl(ParamId::display_card)));
+    EXPECT_FALSE(w.allows(params::decl(ParamId::remote_host)));
+    EXPECT_FALSE(w.allows(params::decl(ParamId::environment_camera_device)));
+    const WritablePatterns narrow("rain.*");
+    EXPECT_FALSE(narrow.allows(params::decl(ParamId::look_vignette)));
+    EXPECT_FALSE(WritablePatterns("rain").allows(params::decl(ParamId::rain_intensity)));
+}
+
+TEST(RemoteRequest, SetUnderEitherPrefixIsParsedLikeSet) {
+    for (const char* topic : {"puddle/a1/set/rain.intensity", "puddle/all/set/rain.intensity"}) {
+        auto r = parse(topic, " 0.75\n");
+        ASSERT_TRUE(r) << r.error().message;
+        const auto& set = std::get<SetParam>(*r);
+        EXPECT_EQ(set.id, ParamId::rain_intensity);
+        EXPECT_EQ(std::get<float>(set.value), 0.75f);
+    }
+}
+
+TEST(RemoteRequest, ErrorsNameTheTopicAndWhatIsAllowed) {
+    auto expect_error = [](Result<Request> r, const std::string& text) {
+        ASSERT_FALSE(r) << "accepted; expected: " << text;
+        EXPECT_NE(r.error().message.find(text), std::string::npos) << r.error().message;
+    };
+    expect_error(parse("puddle/a1/set/rain.intensity", "5"),
+                 "remote: puddle/a1/set/rain.intensity: rain.intensity = 5 is out of range");
+    expect_error(parse("puddle/a1/set/rain.drop_count", "2.5"), "rain.drop_count");
+    expect_error(parse("puddle/a1/set/rain.intensty", "1"),
+                 "unknown parameter 'rain.intensty' (did you mean 'rain.intensity'?)");
+    expect_error(parse("puddle/a1/set/water.tint", "0,0,0"),
+                 "water.tint cannot be set remotely (not in remote.writable)");
+    expect_error(parse("puddle/a1/set/display.mode", "640x480"), "a setting of the device itself");
+    expect_error(parse("puddle/a1/command", "format-disk"), "unknown command 'format-disk'");
+    expect_error(parse("puddle/a1/other", "x"), "not a command topic");
+    expect_error(
+        parse_request(settings(), Inbound{"puddle/a1/set/rain.intensity", "", max_payload_bytes + 1}),
+        "payload of 4097 bytes refused (at most 4096)");
+}
+
+TEST(RemoteRequest, CommandsPresetsAndHomeAssistant) {
+    EXPECT_EQ(std::get<Command>(ok("puddle/a1/command", "next-preset")), Command::NextPreset);
+    EXPECT_EQ(std::get<Command>(ok("puddle/all/command", "screenshot")), Command::Screenshot);
+    EXPECT_EQ(std::get<SelectPreset>(ok("puddle/a1/preset/set", "downpour")).name, "downpour");
+    EXPECT_EQ(std::get<SelectPreset>(ok("puddle/a1/preset/set", "none")).name, "");
+    EXPECT_TRUE(std::holds_alternative<HomeAssistantOnline>(ok("homeassistant/status", "online")));
+    EXPECT_TRUE(std::holds_alternative<Ignored>(ok("homeassistant/status", "offline")));
+}
+
+TEST(RemoteSettings, AWorldReadablePasswordFileIsRefused) {
+    test::TempDir dir;
+    const std::string file = dir.write("pw", "s3cret\nignored\n");
+    chmod(file.c_str(), 0600);
+    auto ok = read_password_file(file);
+    ASSERT_TRUE(ok) << ok.error().message;
+    EXPECT_EQ(*ok, "s3cret");
+    chmod(file.c_str(), 0644);
+    auto refused = read_password_file(file);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.error().message,
+              fmt::format("remote: remote.password_file = {}: others may read it; refused (chmod 600 {})",
+                          file, file));
+    EXPECT_EQ(refused.error().code, ExitCode::Config);
+}
+
+TEST(RemoteState, SetSyntaxReadsBackAsTheSameValue) {
+    const params::Params p;
+    for (const params::ParamDecl& d : params::param_decls()) {
+        if (d.kind == params::ParamKind::Path) continue;  // empty text: nothing to parse
+        auto back = params::parse_value(d, set_syntax(p.at(d.id)));
+        ASSERT_TRUE(back) << d.name << ": " << back.error().message;
+        EXPECT_EQ(*back, p.at(d.id)) << d.name;
+    }
+    const auto doc = nlohmann::json::parse(state_document(p));
+    EXPECT_EQ(doc.size(), params::param_count);
+    EXPECT_EQ(doc["rain.intensity"], 0.3);
+    EXPECT_EQ(doc["water.tint"], nlohmann::json::parse("[0.02, 0.04, 0.05]"));
+}
+
+TEST(Discovery, OneControlPerWritableParameterWithTheRegistrysRange) {
+    const RemoteSettings s = settings("rain.*, look.*, overlay.rain");
+    const auto configs = discovery_configs(s, {"downpour", "drizzle"}, "9.9");
+    std::size_t params_seen = 0;
+    for (const Outbound& o : configs) {
+        SCOPED_TRACE(o.topic);
+        EXPECT_TRUE(o.retain);
+        const auto c = nlohmann::json::parse(o.payload);
+        EXPECT_TRUE(o.topic.starts_with("homeassistant/") && o.topic.ends_with("/config"));
+        EXPECT_EQ(c["device"]["identifiers"][0], "puddle-a1");
+        EXPECT_EQ(c["device"]["sw_version"], "9.9");
+        if (!c.contains("command_topic") ||
+            !c["command_topic"].get<std::string>().starts_with("puddle/a1/set/"))
+            continue;
+        ++params_seen;
+        const auto* d = params::find_param(c["command_topic"].get<std::string>().substr(14));
+        ASSERT_NE(d, nullptr);
+        EXPECT_TRUE(s.writable.allows(*d));
+        if (d->kind == params::ParamKind::Int || d->kind == params::ParamKind::Float) {
+            EXPECT_EQ(c["min"].get<double>(), d->min);
+            EXPECT_EQ(c["max"].get<double>(), d->max);
+            EXPECT_TRUE(o.topic.starts_with("homeassistant/number/"));
+        }
+    }
+    std::size_t writable = 0;
+    for (const params::ParamDecl& d : params::param_decls()) writable += s.writable.allows(d);
+    EXPECT_EQ(params_seen, writable);
+    const auto cleared = clear_discovery(s, {"downpour", "drizzle"}, "9.9");
+    ASSERT_EQ(cleared.size(), configs.size());
+    for (std::size_t i = 0; i < cleared.size(); ++i) {
+        EXPECT_EQ(cleared[i].topic, configs[i].topic);
+        EXPECT_TRUE(cleared[i].payload.empty() && cleared[i].retain);
+    }
+}
+
+}  // namespace
+}  // namespace puddle::remote
