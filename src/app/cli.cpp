@@ -51,7 +51,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
                  "Print every parameter with its type, default, range and meaning");
     cli.add_flag("--markdown", o.markdown, "With --list-params: print the Markdown table the README carries");
     cli.add_flag("--check", o.check,
-                 "Check this machine (config, screens, GPU, GPIO, cameras): OK or what to fix, then exit");
+                 "Check this machine (config, screens, GPU, GPIO, cameras; the schedule's active entries and "
+                 "next transition): OK or what to fix, then exit");
     cli.add_flag("--print-config", o.print_config,
                  "Print every effective value and where it came from, then exit");
     cli.add_option("--backend,-b", backend,

@@ -104,8 +104,7 @@ void publish_health(RemoteControl& r, const FrameStats::Summary& s) {
 
 void RemoteControl::reply_error(const std::string& topic, const std::string& message) {
     spdlog::warn("{}", message);
-    client->publish(settings.prefix + "/error", nlohmann::json{{"topic", topic}, {"error", message}}.dump(),
-                    false);
+    client->publish(settings.prefix + "/error", remote::error_document(topic, message), false);
 }
 
 void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, FrameCapture& capture) {

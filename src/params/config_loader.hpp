@@ -28,8 +28,8 @@ struct Config {
     std::vector<ConfigEntry> entries;
     std::optional<std::string> preset;  // top-level `preset = "downpour"`
     int preset_line = 0;
-    std::vector<KnobSpec> knobs;  // `[[knob]]` tables
-    std::vector<ScheduleEntry> schedule;      // `[[schedule]]` tables, in file order
+    std::vector<KnobSpec> knobs;               // `[[knob]]` tables
+    std::vector<ScheduleEntry> schedule;       // `[[schedule]]` tables, in file order
     std::optional<ScheduleLocation> location;  // `[location]`, required when an entry uses sunrise or sunset
     // The saved state's top-level `remote = ["rain.intensity"]`: which of its values came from MQTT
     // rather than a knob (ParamSource::Remote once restored).

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "remote/health.hpp"
+#include "remote/state_json.hpp"
 
 namespace puddle::remote {
 
@@ -41,7 +42,7 @@ struct Builder {
     }
     void add(const char* component, const std::string& object, const json& config) {
         out.push_back({fmt::format("{}/{}/{}/{}/config", discovery_root, component, node, object),
-                       config.dump(), true});
+                       dump_json(config), true});
     }
 
     void parameter(const params::ParamDecl& d) {

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "remote/state_json.hpp"
+
 namespace puddle::remote {
 
 namespace {
@@ -27,7 +29,7 @@ std::string health_document(const Health& h) {
         {"camera_dropped_frames", h.camera_dropped_frames},
     };
     if (h.soc_temperature_c) doc["soc_temperature_c"] = rounded(*h.soc_temperature_c, 1);
-    return doc.dump();
+    return dump_json(doc);
 }
 
 std::optional<double> soc_temperature_c(const std::string& thermal_dir) {

@@ -28,13 +28,21 @@ std::string state_document(const params::Params& params) {
     nlohmann::json doc = nlohmann::json::object();
     for (const params::ParamDecl& d : params::param_decls())
         doc[std::string(d.name)] = json_value(params.at(d.id));
-    return doc.dump();
+    return dump_json(doc);
 }
 
 std::string set_syntax(const params::ParamValue& value) {
     if (const auto* s = std::get_if<std::string>(&value)) return *s;
     if (const auto* c = std::get_if<glm::vec3>(&value)) return fmt::format("{},{},{}", c->x, c->y, c->z);
     return params::format_value(value);
+}
+
+std::string error_document(const std::string& topic, const std::string& message) {
+    return dump_json(nlohmann::json{{"topic", topic}, {"error", message}});
+}
+
+std::string dump_json(const nlohmann::json& doc) {
+    return doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace puddle::remote

@@ -18,8 +18,8 @@
 
 #include "app/display_power.hpp"
 #include "app/frame_stats.hpp"
-#include "params/config_loader.hpp"
 #include "app/remote_plugin.hpp"
+#include "params/config_loader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/mosquitto_broker.hpp"
 #include "systems/live_tuning.hpp"

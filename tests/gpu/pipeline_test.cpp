@@ -88,7 +88,8 @@ TEST_F(PipelineTest, KnowsItsLabelBlendAndActiveUniforms) {
     EXPECT_EQ(p.blend(), Blend::Alpha);
     std::vector<std::string> names(p.uniform_names().begin(), p.uniform_names().end());
     std::sort(names.begin(), names.end());
-    EXPECT_EQ(names, (std::vector<std::string>{"u_canvas", "u_quarter_turns", "u_screen_size"}));
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"u_brightness", "u_canvas", "u_quarter_turns", "u_screen_size"}));
     for (const std::string& name : names) EXPECT_TRUE(p.uniform(name).active()) << name;
     EXPECT_NE(p.location("u_quarter_turns"), p.location("u_screen_size"));
     EXPECT_EQ(p.location("u_no_such_uniform"), -1);

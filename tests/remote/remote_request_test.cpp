@@ -121,6 +121,18 @@ TEST(RemoteState, SetSyntaxReadsBackAsTheSameValue) {
     EXPECT_EQ(doc["water.tint"], nlohmann::json::parse("[0.02, 0.04, 0.05]"));
 }
 
+// A payload of any bytes may be quoted in an error: one 0xff byte made nlohmann's dump() throw, and the
+// exception ended the process (and, retained on a fleet topic, every screen at each start).
+TEST(RemoteState, AnErrorQuotingBytesThatAreNotUtf8IsStillValidJson) {
+    const std::string message = "remote: set/rain.intensity: '\xff\xfe' is not a number";
+    std::string document;
+    ASSERT_NO_THROW(document = error_document("puddle/t/set/rain.intensity", message));
+    const auto doc = nlohmann::json::parse(document);
+    EXPECT_EQ(doc["topic"], "puddle/t/set/rain.intensity");
+    EXPECT_EQ(doc["error"], "remote: set/rain.intensity: '\xef\xbf\xbd\xef\xbf\xbd' is not a number")
+        << "each bad byte becomes U+FFFD";
+}
+
 TEST(Discovery, OneControlPerWritableParameterWithTheRegistrysRange) {
     const RemoteSettings s = settings("rain.*, look.*, overlay.rain");
     const auto configs = discovery_configs(s, {"downpour", "drizzle"}, "9.9");

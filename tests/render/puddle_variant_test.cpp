@@ -39,7 +39,8 @@ TEST(PuddleVariant, DefaultsSelectTheCheapPath) {
 
 TEST(PuddleVariant, EachParameterPicksItsVariant) {
     EXPECT_TRUE(choose_puddle_variant(with({"render.method=raymarch"}), false).raymarch);
-    EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=true"}), false).ground, GroundKind::Checkerboard);
+    EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=true"}), false).ground,
+              GroundKind::Checkerboard);
     EXPECT_TRUE(choose_puddle_variant(with({}), true).env_rgbm);
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=aces"}), false).tonemap, params::Tonemap::aces);
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=clip"}), false).tonemap, params::Tonemap::clip);

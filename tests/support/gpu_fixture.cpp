@@ -94,6 +94,7 @@ void draw_texture(gpu::Device& device, const gpu::Texture& target, const gpu::Pi
         .set_texture(0, texture, nearest)
         .set("u_quarter_turns", 0)
         .set("u_screen_size", glm::vec2(size))
+        .set("u_brightness", 1.0f)  // the canvas shader dims by display.brightness; a copy keeps the texels
         .draw_fullscreen();
 }
 

@@ -200,7 +200,8 @@ set = { "rain.intensity" = 0.8 }
     rig.params.replace_with(rig.tuning.layers.compose());
     EXPECT_EQ(rig.params.source(ParamId::rain_intensity), ParamSource::Remote);
     EXPECT_FALSE(rig.at(local(2026, 6, 5, 21, 0)));
-    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.1f) << "no transition: the remote value holds";
+    EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.1f)
+        << "no transition: the remote value holds";
     EXPECT_TRUE(rig.at(local(2026, 6, 5, 22, 0)));
     EXPECT_FALSE(rig.tuning.layers.knob(ParamId::rain_intensity));
     EXPECT_FALSE(rig.tuning.layers.is_remote(ParamId::rain_intensity));
