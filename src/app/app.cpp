@@ -75,6 +75,13 @@ void restore_saved_state(systems::LiveTuning& tuning, bool read_only) {
 
 }  // namespace
 
+std::vector<std::string> preset_folders_for(const std::string& config_path) {
+    std::vector<std::string> folders{system_presets};
+    if (!config_path.empty())
+        folders.push_back((std::filesystem::path(config_path).parent_path() / "presets").string());
+    return folders;
+}
+
 // Bad saved state is only warned about (restore_saved_state).
 Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
     std::vector<params::ConfigEntry> command_line;
@@ -93,9 +100,7 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
         command_line.push_back(std::move(*entry));
     }
     const std::string path = config_path(o);
-    std::vector<std::string> preset_folders{system_presets};
-    if (!path.empty())
-        preset_folders.push_back((std::filesystem::path(path).parent_path() / "presets").string());
+    const std::vector<std::string> preset_folders = preset_folders_for(path);
     systems::LiveTuning tuning(
         params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
     tuning.config_path = path;

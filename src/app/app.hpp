@@ -21,6 +21,9 @@ int run(int argc, const char* const* argv);
 // original is set aside (README "Saved state"). `read_only` (--print-config) reads and warns but changes
 // nothing on disk. The soak test builds its engine with this too, so it runs what the binary runs.
 Result<systems::LiveTuning> load_tuning(const CliOptions& options, bool read_only = false);
+// Where presets are read from besides the built-in ones: /etc/puddle/presets, then presets/ beside the
+// config file (a later folder's preset of the same name wins).
+std::vector<std::string> preset_folders_for(const std::string& config_path);
 
 // The features the puddle binary installs, in this order: the service (signals, systemd), live tuning,
 // the puddle, remote control (MQTT; nothing unless [remote] asks for it). The plugins take their arguments

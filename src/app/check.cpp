@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "app/app.hpp"
 #include "app/cli.hpp"
 #include "app/version.hpp"
 #include "camera/format_negotiation.hpp"
@@ -15,6 +16,7 @@
 #include "gpu/device.hpp"
 #include "io/gpio_backend.hpp"
 #include "params/config_loader.hpp"
+#include "params/param_layers.hpp"
 #include "params/state_store.hpp"
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
@@ -136,8 +138,11 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
         r.absent("no config file (/etc/puddle/puddle.toml does not exist): built-in defaults are used");
     } else {
         auto config = params::load_config_file(config_path);
-        if (!config) {
-            r.fix(config.error().message);
+        // The presets it names (top level and in schedule entries) must exist, as they must at start-up.
+        params::ParamLayers layers(params::Presets::load(preset_folders_for(config_path)), {});
+        auto composed = config ? layers.set_config(*config) : Result<void>(config.error());
+        if (!composed) {
+            r.fix(composed.error().message);
             exit_code = static_cast<int>(ExitCode::Config);
         } else {
             r.ok(fmt::format("{}: valid ({} values, {} knobs{}{})", config_path, config->entries.size(),

@@ -279,6 +279,24 @@ TEST(Check, AnInvalidConfigIsExitCodeTwoWithFileLine) {
     EXPECT_TRUE(has(o.output, "\n1 thing(s) to fix (FIX above).\n")) << o.output;
 }
 
+// A preset that does not exist stops a start with exit 2, so --check must say so too: it said OK, and an
+// installer who trusted it walked away from a screen that would not start. Both places name presets.
+TEST(Check, APresetThatDoesNotExistIsToFixAtTopLevelAndInASchedule) {
+    TempDir dir;
+    for (const std::string& text :
+         {std::string("preset = \"nosuch\"\n"), std::string("[[schedule]]\nfrom = \"00:00\"\nto = \"24:00\"\n"
+                                                            "preset = \"nosuch\"\n")}) {
+        const std::string cfg = dir.write("presets.toml", text);
+        const CommandResult o = check("--gpio mock: --config " + cfg);
+        EXPECT_EQ(o.exit_code, 2) << o.output;
+        const auto config = sections(o.output)["[config]"];
+        ASSERT_FALSE(config.empty()) << o.output;
+        EXPECT_TRUE(config[0].starts_with("  FIX   ")) << config[0];
+        EXPECT_TRUE(has(config[0], "nosuch")) << config[0];
+        EXPECT_TRUE(has(o.output, "thing(s) to fix")) << o.output;
+    }
+}
+
 // The schedule's section: the entries active now and the next transition in local time (a window of the
 // whole day is active at any hour and ends at the next midnight).
 TEST(Check, PrintsTheActiveScheduleEntriesAndTheNextTransition) {
