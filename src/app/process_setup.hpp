@@ -1,6 +1,8 @@
 #pragma once
 // Process-wide settings for a display that runs for months, made once at the start of main (the puddle
 // binary and the soak test, which builds the engine the binary builds):
+// - A fatal signal (SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT) writes one line and the return addresses to
+//   stderr before the default action, so a crash on a wall leaves a trace in the journal.
 // - SIGPIPE ignored: a log reader that goes away (`puddle | head`) must not end the display; writes then
 //   fail with EPIPE and are dropped (systemd sets the same for services: IgnoreSIGPIPE=yes).
 // - One malloc arena (glibc mallopt M_ARENA_MAX, malloc(3)): the worker threads (pipeline compiler,

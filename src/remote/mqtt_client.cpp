@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstring>
 
 #include "util/monotonic_clock.hpp"
@@ -117,25 +118,55 @@ void MqttClient::on_connect(mosquitto*, void* p, int rc) {
 
 void MqttClient::on_message(mosquitto*, void* p, const mosquitto_message* m) {
     auto* self = static_cast<MqttClient*>(p);
-    // The rate limit: a token bucket, refilled at rate_per_second up to rate_burst.
-    const double now = monotonic_seconds();
-    self->tokens_ = std::min(rate_burst, self->tokens_ + (now - self->tokens_at_) * rate_per_second);
-    self->tokens_at_ = now;
-    if (self->tokens_ < 1.0) {
-        ++self->dropped_;
-        return;
-    }
-    self->tokens_ -= 1.0;
     const auto size = static_cast<std::size_t>(std::max(0, m->payloadlen));
     Inbound in{m->topic ? m->topic : "", {}, size};
     if (size <= max_payload_bytes && m->payload)
         in.payload.assign(static_cast<const char*>(m->payload), size);
-    std::lock_guard lock(self->inbox_mutex_);
-    if (self->inbox_.size() >= inbox_capacity) {
-        ++self->dropped_;
+    // The rate limit: a token bucket, refilled at rate_per_second up to rate_burst. Over the limit, the
+    // message waits in held_, replacing an older one of the same topic.
+    self->refill_tokens();
+    if (self->tokens_ < 1.0 || !self->held_.empty()) {
+        for (Inbound& held : self->held_)
+            if (held.topic == in.topic) {
+                held = std::move(in);
+                ++self->dropped_;  // the value it replaced
+                return;
+            }
+        if (self->held_.size() >= inbox_capacity) {
+            ++self->dropped_;
+            return;
+        }
+        self->held_.push_back(std::move(in));
+        self->release_held();
         return;
     }
-    self->inbox_.push_back(std::move(in));
+    self->tokens_ -= 1.0;
+    self->deliver(std::move(in));
+}
+
+void MqttClient::refill_tokens() {
+    const double now = monotonic_seconds();
+    tokens_ = std::min(rate_burst, tokens_ + (now - tokens_at_) * rate_per_second);
+    tokens_at_ = now;
+}
+
+void MqttClient::release_held() {
+    refill_tokens();
+    std::size_t released = 0;
+    while (released < held_.size() && tokens_ >= 1.0) {
+        tokens_ -= 1.0;
+        deliver(std::move(held_[released++]));
+    }
+    held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(released));
+}
+
+void MqttClient::deliver(Inbound in) {
+    std::lock_guard lock(inbox_mutex_);
+    if (inbox_.size() >= inbox_capacity) {
+        ++dropped_;
+        return;
+    }
+    inbox_.push_back(std::move(in));
 }
 
 bool MqttClient::connect_once() {
@@ -183,6 +214,7 @@ void MqttClient::run(std::stop_token stop) {
         }
         flush_outbox();
         const int rc = mosquitto_loop(mosq_, 50, 1);
+        release_held();  // held messages go on as the rate limit refills, even when nothing new arrives
         if (connected_) backoff = 1.0;
         if (rc != MOSQ_ERR_SUCCESS) {
             if (connected_) {

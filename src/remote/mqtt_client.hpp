@@ -5,7 +5,9 @@
 // `online` retained on the availability topic (the last will, set before connecting, is `offline`
 // retained) and, when the broker is missing, goes away or refuses the credentials, says so once and
 // tries again with a growing delay (1 s doubling to 30 s); the display never notices.
-// Messages beyond the rate limit (a burst of 40, then 20 a second) or a full inbox are dropped and
+// Messages beyond the rate limit (a burst of 40, then 20 a second) are held back, the newest per topic
+// (a slider dragged in Home Assistant sends many values; the last is the one meant), and passed on as
+// the limit allows; those they replace, and any beyond a full inbox or a full hold, are dropped and
 // counted (dropped()), so a flood costs the frame loop nothing.
 
 #include <atomic>
@@ -76,6 +78,10 @@ private:
     void run(std::stop_token stop);
     bool connect_once();
     void flush_outbox();
+    // Refills the rate limit's tokens; passes held messages on while there are tokens.
+    void release_held();
+    void refill_tokens();
+    void deliver(Inbound in);
     void wait(std::stop_token& stop, double seconds);
     void warn_once(const std::string& line);
     static void on_connect(mosquitto*, void* self, int rc);
@@ -94,7 +100,8 @@ private:
     bool socket_open_ = false;  // network thread only
     bool outage_reported_ = false;
     double tokens_ = rate_burst, tokens_at_ = 0;
-    std::jthread thread_;  // last: joined before the members it uses die
+    std::vector<Inbound> held_;  // network thread only: the newest rate-limited message per topic
+    std::jthread thread_;        // last: joined before the members it uses die
 };
 
 }  // namespace puddle::remote

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <map>
 #include <sstream>
 #include <string>
@@ -81,6 +82,19 @@ TEST(ProcessSetup, AWriteToAClosedPipeFailsWithEpipe) {
     const ProbeReport control = run_probe("");
     EXPECT_NE(control.exit_code, 0) << "SIGPIPE ends a process by default: " << control.output;
     EXPECT_EQ(control.values.count("closed_pipe_write"), 0u) << control.output;
+}
+
+// A crash leaves a line and the return addresses on stderr (the journal), then dies of the same signal:
+// without the handler the process dies silently.
+TEST(ProcessSetupDeathTest, AFatalSignalWritesALineAndTheReturnAddressesThenDiesOfIt) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_EXIT(
+        {
+            setup_process();
+            std::raise(SIGSEGV);
+        },
+        ::testing::KilledBySignal(SIGSEGV),
+        "puddle: crashed \\(fatal signal\\); return addresses follow:\n.*puddle");
 }
 
 }  // namespace

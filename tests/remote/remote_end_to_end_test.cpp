@@ -3,6 +3,7 @@
 // JPEGs of the asked width, the client survives a broker restart and an outage, and the broker delivers
 // the last will when the process is killed. Skipped when mosquitto is not installed.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -253,6 +254,17 @@ TEST_F(RemoteEndToEnd, HealthIsPublishedEverySecond) {
     EXPECT_GT(h["frame_ms_p95"].get<double>(), 0);
     EXPECT_GT(h["rss_mb"].get<double>(), 10);
     EXPECT_EQ(h["camera_dropped_frames"], 0);
+}
+
+// A flood past the rate limit (a slider dragged in Home Assistant): the newest value is the one that
+// stays, on screen and in the state. Before, the limit dropped the latest messages and left an old one.
+TEST_F(RemoteEndToEnd, AFloodPastTheRateLimitEndsOnTheNewestValue) {
+    start_puddle();
+    ASSERT_TRUE(wait_state("rain.intensity", "0.3"));
+    for (int i = 1; i <= 150; ++i)
+        client->publish(topic("set/rain.intensity"), fmt::format("{}", i % 9 * 0.1 + 1));
+    // The last sent: 150 % 9 = 6, so 1.6.
+    EXPECT_TRUE(wait_state("rain.intensity", "1.6")) << puddle->log();
 }
 
 TEST_F(RemoteEndToEnd, FleetPrefixReachesTheScreen) {
