@@ -29,15 +29,15 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
     g.texture = std::move(texture).value();
     g.texture.upload(std::as_bytes(std::span(image.data)));
     g.texture.generate_mipmaps();
-    // An image is trilinear and anisotropic (where the GPU has it): tiled paving at grazing angles does not
-    // shimmer. The procedural paving, the default ground, is bilinear from the nearest mip level: seen from
-    // the default camera through rippled water neither the anisotropy nor the blend between levels shows,
-    // and on llvmpipe they made the whole 1080p frame 2.6 times (8x anisotropic) or 1.2 to 1.4 times
-    // (trilinear) dearer than the checkerboard (issue 21, item 6: the default look may cost 10% more).
+    // Trilinear. An image is also anisotropic (where the GPU has it): tiled paving at grazing angles does
+    // not shimmer. The procedural paving, the default ground, is not: seen from the default camera through
+    // rippled water the anisotropy does not show, and on llvmpipe it made the whole 1080p frame 2.6 times
+    // dearer. Bilinear from the nearest mip level (GL_LINEAR_MIPMAP_NEAREST) was cheaper still, but with it
+    // Mesa 22.3's llvmpipe crashed in its shader code in the VM test when a camera was unplugged while
+    // streaming (4 runs of 4; trilinear: none), so it is not used.
     const bool procedural = path.empty();
     g.sampler = device.create_sampler({.label = "ground",
                                        .mipmaps = true,
-                                       .mip = procedural ? gpu::Filter::Nearest : gpu::Filter::Linear,
                                        .wrap = gpu::Wrap::Repeat,
                                        .anisotropy = procedural ? 1.0f : 8.0f});
     g.requested_image = path;
