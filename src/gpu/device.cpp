@@ -92,10 +92,7 @@ Sampler Device::create_sampler(const SamplerDesc& desc) {
     glGenSamplers(1, &id);
     s.id_ = GlHandle<detail::delete_sampler>(id);
     GLint min = desc.min == Filter::Linear ? GL_LINEAR : GL_NEAREST;
-    if (desc.mipmaps && desc.min == Filter::Linear)
-        min = desc.mip == Filter::Linear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST;
-    else if (desc.mipmaps)
-        min = GL_NEAREST_MIPMAP_NEAREST;
+    if (desc.mipmaps) min = desc.min == Filter::Linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST;
     glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, min);
     glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, desc.mag == Filter::Linear ? GL_LINEAR : GL_NEAREST);
     glSamplerParameteri(id, GL_TEXTURE_WRAP_S, gl_wrap(desc.wrap));

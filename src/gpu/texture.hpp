@@ -94,9 +94,6 @@ struct SamplerDesc {
     std::string label;
     Filter min = Filter::Linear, mag = Filter::Linear;
     bool mipmaps = false;  // trilinear when min is Linear
-    // With mipmaps and a Linear min: Nearest reads the one nearest level (GL_LINEAR_MIPMAP_NEAREST, half the
-    // texel reads of trilinear, where a software rasteriser pays per read).
-    Filter mip = Filter::Linear;
     Wrap wrap = Wrap::Clamp;
     float anisotropy = 1.0f;  // clamped to the device's maximum; ignored without the extension
 };
