@@ -69,6 +69,7 @@ TEST_F(PipelineTest, AReplacePipelineAfterAnAlphaOneTurnsBlendingOff) {
         .set_pipeline(alpha)
         .set_texture(0, half_red, nearest)
         .set("u_quarter_turns", 0)
+        .set("u_brightness", 1.0f)
         .set("u_screen_size", glm::vec2(4, 4))
         .draw_fullscreen();
     ASSERT_NE(test::read_texels(*device_, t)[0].b, 0) << "blended over the blue";
@@ -77,6 +78,7 @@ TEST_F(PipelineTest, AReplacePipelineAfterAnAlphaOneTurnsBlendingOff) {
         .set_pipeline(replace)
         .set_texture(0, half_red, nearest)
         .set("u_quarter_turns", 0)
+        .set("u_brightness", 1.0f)
         .set("u_screen_size", glm::vec2(4, 4))
         .draw_fullscreen();
     EXPECT_EQ(test::read_texels(*device_, t), std::vector(16, glm::u8vec4{255, 0, 0, 128}));

@@ -77,6 +77,7 @@ TEST_F(RenderPassTest, ARowBandDrawsOnlyItsRows) {
         .set_pipeline(copy)
         .set_texture(0, green, nearest)
         .set("u_quarter_turns", 0)
+        .set("u_brightness", 1.0f)
         .set("u_screen_size", glm::vec2(4, 8))
         .draw_fullscreen();
     const auto texels = read_texels(*device_, t);
@@ -149,6 +150,7 @@ TEST_F(RenderPassTest, UniformsSetOnThePassReachTheShader) {
             .set_pipeline(copy)
             .set_texture(0, blue_green, nearest)
             .set(copy.uniform("u_quarter_turns"), turns)
+            .set("u_brightness", 1.0f)
             .set("u_screen_size", screen)
             .set("u_not_in_this_shader", 1.0f)
             .draw_fullscreen();

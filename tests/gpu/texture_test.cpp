@@ -259,6 +259,7 @@ protected:
             .set_pipeline(copy)
             .set_texture(0, black_white, device_->create_sampler(desc))
             .set("u_quarter_turns", 0)
+            .set("u_brightness", 1.0f)
             .set("u_screen_size", glm::vec2(screen_width, 1))
             .draw_fullscreen();
         std::vector<int> grey;
