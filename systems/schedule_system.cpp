@@ -9,6 +9,8 @@
 #include <iterator>
 #include <vector>
 
+#include "schedule/time_zone.hpp"
+
 namespace puddle::systems {
 
 namespace {
@@ -73,6 +75,10 @@ bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params,
     if (reloaded) {
         run.calendar = make_calendar(tuning.layers.config());
         run.config_generation = tuning.config_generation;
+        if (run.calendar && !run.time_zone_checked) {
+            run.time_zone_checked = true;
+            if (const auto problem = schedule::time_zone_problem()) spdlog::warn("schedule: {}", *problem);
+        }
     }
     const params::Config& config = tuning.layers.config();
     std::vector<int> active = run.calendar ? run.calendar->active_at(now) : std::vector<int>{};

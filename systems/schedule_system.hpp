@@ -35,6 +35,8 @@ struct ScheduleRun {
     bool evaluated = false;
     double last_evaluated = 0;
     double next_evaluation = 0;  // the next transition, or a day later when none is in sight
+    bool time_zone_checked =
+        false;  // a TZ the C library cannot resolve is logged once, with the first calendar
 };
 
 // The calendar of a config's entries (none without entries).

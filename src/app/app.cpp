@@ -183,7 +183,8 @@ int run(int argc, const char* const* argv) {
     const auto params = std::make_unique<params::Params>(tuning->layers.compose());
     if (o.print_config) {
         std::fputs(
-            params::format_effective(*params, tuning->layers.preset_name(), tuning->layers.schedule_entries())
+            params::format_effective(*params, tuning->layers.preset_name(), tuning->layers.schedule_entries(),
+                                     tuning->layers.active_schedule_presets())
                 .c_str(),
             stdout);
         return 0;

@@ -20,6 +20,7 @@
 #include "params/state_store.hpp"
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
+#include "schedule/time_zone.hpp"
 #include "systems/schedule_system.hpp"
 
 namespace puddle::app {
@@ -58,6 +59,7 @@ void check_schedule(Report& r, const params::Config& config) {
         r.absent("no [[schedule]] tables: the config applies at all hours");
         return;
     }
+    if (const auto problem = schedule::time_zone_problem()) r.fix(*problem);
     const double now = systems::system_wall_seconds();
     std::vector<std::string> active;
     for (int i : calendar->active_at(now))

@@ -156,7 +156,8 @@ void remote_publish_system(RemoteControl& r, const params::Params& params, const
     if (r.discovery_due) {
         r.discovery_due = false;
         publish_all(*r.client,
-                    remote::discovery_configs(r.settings, tuning.layers.presets().names(), version()));
+                    remote::discovery_configs(r.settings, tuning.layers.presets().names(), version(),
+                                              {.soc_temperature = remote::soc_temperature_c().has_value()}));
     }
     publish_state(r, params, tuning);
     if (const auto s = r.stats.take_report()) publish_health(r, *s);

@@ -1,6 +1,7 @@
 #include "params/param_docs.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace puddle::params {
 
@@ -43,11 +44,13 @@ std::string format_params_markdown() {
 }
 
 std::string format_effective(const Params& params, std::string_view preset,
-                             std::span<const int> schedule_entries) {
+                             std::span<const int> schedule_entries,
+                             std::span<const std::string> schedule_presets) {
     std::string out = fmt::format(
         "# Effective values; after each, where it came from (default < preset < config < schedule < "
-        "knob or remote < --set).\n# preset: {}\n",
-        preset.empty() ? "none" : preset);
+        "knob or remote < --set).\n# preset: {}{}{}\n",
+        preset.empty() ? "none" : preset,
+        schedule_presets.empty() ? "" : "; over it, active now: ", fmt::join(schedule_presets, ", "));
     for (const ParamDecl& d : param_decls()) {
         const ParamSource s = params.source(d.id);
         const auto k = static_cast<std::size_t>(d.id);

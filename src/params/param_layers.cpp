@@ -159,6 +159,15 @@ std::array<int, param_count> ParamLayers::schedule_entries() const {
     return out;
 }
 
+std::vector<std::string> ParamLayers::active_schedule_presets() const {
+    std::vector<std::string> out;
+    for (int i : schedule_active_) {
+        const ScheduleEntry& e = config_.schedule[static_cast<std::size_t>(i)];
+        if (e.preset) out.push_back(fmt::format("schedule[{}] {}", e.number, *e.preset));
+    }
+    return out;
+}
+
 Params ParamLayers::compose() const {
     Params p;
     apply_config(preset_, p, ParamSource::Preset);

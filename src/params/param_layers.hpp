@@ -60,6 +60,8 @@ public:
     // Per parameter, the number N of the active entry (schedule[N]) whose value the schedule layer gives,
     // 0 where it gives none (--print-config).
     std::array<int, param_count> schedule_entries() const;
+    // The presets the active entries apply, as "schedule[N] name", in file order (--print-config's header).
+    std::vector<std::string> active_schedule_presets() const;
 
     Params compose() const;
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "remote/health.hpp"
 #include "remote/state_json.hpp"
@@ -75,7 +76,8 @@ struct Builder {
     }
 };
 
-Builder build(const RemoteSettings& s, const std::vector<std::string>& presets, std::string_view version) {
+Builder build(const RemoteSettings& s, const std::vector<std::string>& presets, std::string_view version,
+              HealthSensors sensors) {
     Builder b{s, node_id(s), {}, {}};
     b.device = {{"identifiers", json::array({b.node})},
                 {"name", "Puddle " + s.client_id},
@@ -101,6 +103,7 @@ Builder build(const RemoteSettings& s, const std::vector<std::string>& presets, 
         b.add("button", object, c);
     }
     for (const HealthField& f : health_fields) {
+        if (std::string_view(f.key) == "soc_temperature_c" && !sensors.soc_temperature) continue;
         json c = b.entity(f.key, f.name);
         c["state_topic"] = s.prefix + "/health";
         c["value_template"] = fmt::format("{{{{ value_json.{} }}}}", f.key);
@@ -124,13 +127,13 @@ std::string node_id(const RemoteSettings& s) {
 }
 
 std::vector<Outbound> discovery_configs(const RemoteSettings& s, const std::vector<std::string>& presets,
-                                        std::string_view version) {
-    return std::move(build(s, presets, version).out);
+                                        std::string_view version, HealthSensors sensors) {
+    return std::move(build(s, presets, version, sensors).out);
 }
 
 std::vector<Outbound> clear_discovery(const RemoteSettings& s, const std::vector<std::string>& presets,
                                       std::string_view version) {
-    std::vector<Outbound> out = discovery_configs(s, presets, version);
+    std::vector<Outbound> out = discovery_configs(s, presets, version, {.soc_temperature = true});
     for (Outbound& o : out) o.payload.clear();
     return out;
 }

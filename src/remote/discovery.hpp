@@ -26,10 +26,18 @@ inline constexpr const char* discovery_root = "homeassistant";
 // '-' as '_': unique per screen, as the broker already requires of client ids.
 std::string node_id(const RemoteSettings& settings);
 
+// Which health sensors this screen has: the SoC temperature only where /sys/class/thermal has a zone, so
+// that Home Assistant shows no sensor that stays "unknown".
+struct HealthSensors {
+    bool soc_temperature = false;
+};
+
 // Every discovery config, retained. `presets`: the preset names the select offers ("none" is added).
 std::vector<Outbound> discovery_configs(const RemoteSettings& settings,
-                                        const std::vector<std::string>& presets, std::string_view version);
-// The same topics with empty retained payloads: Home Assistant removes the entities.
+                                        const std::vector<std::string>& presets, std::string_view version,
+                                        HealthSensors sensors);
+// Every topic discovery_configs can announce (all sensors) with empty retained payloads: Home Assistant
+// removes the entities.
 std::vector<Outbound> clear_discovery(const RemoteSettings& settings, const std::vector<std::string>& presets,
                                       std::string_view version);
 

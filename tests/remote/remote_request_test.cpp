@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "remote/discovery.hpp"
@@ -135,7 +136,7 @@ TEST(RemoteState, AnErrorQuotingBytesThatAreNotUtf8IsStillValidJson) {
 
 TEST(Discovery, OneControlPerWritableParameterWithTheRegistrysRange) {
     const RemoteSettings s = settings("rain.*, look.*, overlay.rain");
-    const auto configs = discovery_configs(s, {"downpour", "drizzle"}, "9.9");
+    const auto configs = discovery_configs(s, {"downpour", "drizzle"}, "9.9", {.soc_temperature = true});
     std::size_t params_seen = 0;
     for (const Outbound& o : configs) {
         SCOPED_TRACE(o.topic);
@@ -166,6 +167,23 @@ TEST(Discovery, OneControlPerWritableParameterWithTheRegistrysRange) {
         EXPECT_EQ(cleared[i].topic, configs[i].topic);
         EXPECT_TRUE(cleared[i].payload.empty() && cleared[i].retain);
     }
+}
+
+// The SoC temperature sensor is announced only where the screen has a thermal zone; clearing removes it
+// either way (it may have been announced before, on other hardware or another kernel).
+TEST(Discovery, TheTemperatureSensorOnlyWhereThereIsAThermalZone) {
+    const RemoteSettings s = settings("rain.*");
+    const auto has_temperature = [](const std::vector<Outbound>& out) {
+        return std::any_of(out.begin(), out.end(), [](const Outbound& o) {
+            return o.topic.find("/soc_temperature_c/") != std::string::npos;
+        });
+    };
+    const auto with = discovery_configs(s, {}, "9.9", {.soc_temperature = true});
+    const auto without = discovery_configs(s, {}, "9.9", {.soc_temperature = false});
+    EXPECT_TRUE(has_temperature(with));
+    EXPECT_FALSE(has_temperature(without));
+    EXPECT_EQ(with.size(), without.size() + 1);
+    EXPECT_TRUE(has_temperature(clear_discovery(s, {}, "9.9")));
 }
 
 }  // namespace

@@ -158,6 +158,28 @@ set = { "rain.intensity" = 2.0 }
     EXPECT_FLOAT_EQ(rig.params.get<ParamId::rain_intensity>(), 0.5f);  // the config again
 }
 
+// --print-config's header names the preset an active entry applies, not just the config's ("none").
+TEST(ScheduleSystem, PrintConfigNamesThePresetOfAnActiveEntry) {
+    test::TzGuard tz("UTC");
+    Rig rig(R"(
+[[schedule]]
+from = "18:00"
+to = "23:00"
+preset = "downpour"
+)");
+    const auto printed = [&] {
+        return params::format_effective(rig.params, rig.tuning.layers.preset_name(),
+                                        rig.tuning.layers.schedule_entries(),
+                                        rig.tuning.layers.active_schedule_presets());
+    };
+    rig.at(local(2026, 6, 5, 19, 0));
+    EXPECT_NE(printed().find("\n# preset: none; over it, active now: schedule[1] downpour\n"),
+              std::string::npos)
+        << printed();
+    rig.at(local(2026, 6, 5, 23, 30));
+    EXPECT_NE(printed().find("\n# preset: none\n"), std::string::npos) << printed();
+}
+
 // A knob (or a remote command) set during a window holds until the next transition; then the schedule
 // applies again and the knob value is forgotten.
 TEST(ScheduleSystem, AKnobChangeHoldsUntilTheNextTransition) {
