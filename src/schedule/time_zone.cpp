@@ -27,11 +27,13 @@ bool is_posix_rule(std::string_view tz) {
 std::optional<std::string> time_zone_problem(const char* tz, std::string_view zoneinfo_dir) {
     if (tz == nullptr || *tz == '\0') return std::nullopt;
     std::string_view name = tz;
-    if (name.front() == ':') name.remove_prefix(1);
-    else if (is_posix_rule(name)) return std::nullopt;
-    const std::filesystem::path file =
-        !name.empty() && name.front() == '/' ? std::filesystem::path(name)
-                                             : std::filesystem::path(zoneinfo_dir) / std::string(name);
+    if (name.front() == ':')
+        name.remove_prefix(1);
+    else if (is_posix_rule(name))
+        return std::nullopt;
+    const std::filesystem::path file = !name.empty() && name.front() == '/'
+                                           ? std::filesystem::path(name)
+                                           : std::filesystem::path(zoneinfo_dir) / std::string(name);
     std::error_code ec;
     if (!name.empty() && std::filesystem::is_regular_file(file, ec)) return std::nullopt;
     return "TZ='" + std::string(tz) + "' is no time zone (no file " + file.string() +
