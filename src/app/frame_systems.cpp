@@ -3,13 +3,20 @@
 #include <utility>
 
 #include "ecs/frame_time.hpp"
+#include "render/view_window.hpp"
 
 namespace puddle::app {
 
 void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
                         systems::OutputCanvas& canvas, systems::RenderTarget& target) {
     display.make_current();  // another engine, or a test, may have made its own current since
-    target.target = systems::begin_canvas_frame(device, params, canvas, display.frame_target());
+    const gpu::FrameTarget screen = display.frame_target();
+    target.target = systems::begin_canvas_frame(device, params, canvas, screen);
+    // The wall's bezels are in the screen's pixels, and its tiles are upright: the screen turned as the
+    // picture is (not at all when the canvas could not be made), whatever render.scale is.
+    const glm::ivec2 upright =
+        canvas.quarter_turns % 2 ? glm::ivec2(screen.size.y, screen.size.x) : screen.size;
+    target.view = render::wall_window(params, glm::vec2(upright));
 }
 
 assets::Image read_display(platform::Display& display, gpu::Device& device) {
