@@ -1,5 +1,7 @@
 #include "app/frame_systems.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <utility>
 
 #include "ecs/frame_time.hpp"
@@ -16,7 +18,16 @@ void begin_frame_system(platform::Display& display, gpu::Device& device, const p
     // picture is (not at all when the canvas could not be made), whatever render.scale is.
     const glm::ivec2 upright =
         canvas.quarter_turns % 2 ? glm::ivec2(screen.size.y, screen.size.x) : screen.size;
-    target.view = render::wall_window(params, glm::vec2(upright));
+    const render::ViewWindow window = render::wall_window(params, glm::vec2(upright));
+    if (window != target.view && window != render::ViewWindow{}) {  // said at start-up and at each change
+        const glm::vec2 view = window.view_size(upright);
+        const glm::vec2 corner = glm::vec2(window.origin.x, 1.0f - window.origin.y - window.extent.y) * view;
+        spdlog::info(
+            "wall: this screen shows {}x{} pixels at ({:.0f}, {:.0f}) from the top left of the "
+            "{:.0f}x{:.0f} view",
+            upright.x, upright.y, corner.x, corner.y, view.x, view.y);
+    }
+    target.view = window;
 }
 
 assets::Image read_display(platform::Display& display, gpu::Device& device) {

@@ -25,6 +25,8 @@ struct ViewWindow {
     glm::vec2 view_size(glm::ivec2 target_size) const { return glm::vec2(target_size) / extent; }
     // The whole view's width / height: what sets the wall camera's horizontal field of view.
     float view_aspect(glm::ivec2 target_size) const;
+
+    bool operator==(const ViewWindow&) const = default;
 };
 
 // This screen's window of the wall that wall.* describes, for an upright picture (after display.rotation
