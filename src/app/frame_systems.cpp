@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <glm/common.hpp>
 #include <utility>
 
 #include "ecs/frame_time.hpp"
@@ -21,7 +22,9 @@ void begin_frame_system(platform::Display& display, gpu::Device& device, const p
     const render::ViewWindow window = render::wall_window(params, glm::vec2(upright));
     if (window != target.view && window != render::ViewWindow{}) {  // said at start-up and at each change
         const glm::vec2 view = window.view_size(upright);
-        const glm::vec2 corner = glm::vec2(window.origin.x, 1.0f - window.origin.y - window.extent.y) * view;
+        // Rounded, and + 0 so that the top row is at 0, not -0.
+        const glm::vec2 corner =
+            glm::round(glm::vec2(window.origin.x, 1.0f - window.origin.y - window.extent.y) * view) + 0.0f;
         spdlog::info(
             "wall: this screen shows {}x{} pixels at ({:.0f}, {:.0f}) from the top left of the "
             "{:.0f}x{:.0f} view",
