@@ -7,13 +7,13 @@ precision highp int;
 
 #include "hash.glsl"
 
-in vec2 v_uv;
+in vec2 v_uv;  // 0..1 across the whole view, of which this target may be a tile (view_window.vert)
 out vec4 o_color;
 
 uniform vec3 u_cam_forward;
 uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;
-uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1)
+uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1), of the whole view (v_uv spans it)
 
 uniform vec3 u_ocean_camera_position;
 uniform vec3 u_ocean_sea_color;

@@ -18,7 +18,7 @@ precision highp float;
 #include "surface_encoding.glsl"
 #include "colour.glsl"
 
-in vec2 v_uv;
+in vec2 v_uv;  // 0..1 across the whole view, of which this target may be a tile (view_window.vert)
 out vec4 o_color;
 
 uniform sampler2D u_surface;   // height, hL - hR, hD - hU (surface.frag)
@@ -30,7 +30,7 @@ uniform vec3 u_camera_position;
 uniform vec3 u_cam_forward;
 uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;
-uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1)
+uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1), of the whole view (v_uv spans it)
 uniform mat3 u_env_matrix;     // rotation about +Y by environment.rotation
 uniform float u_env_scale;     // 2^environment.exposure
 uniform vec2 u_slope_scale;    // world slope of the height per unit of (hR - hL, hU - hD): res / (2 size.xz)

@@ -8,10 +8,10 @@ precision highp int;
 
 #include "hash.glsl"
 
-in vec2 v_uv;
+in vec2 v_uv;  // 0..1 across the whole view, of which this target may be a tile (view_window.vert)
 out vec4 o_color;
 
-uniform float u_aspect;    // width / height
+uniform float u_aspect;    // width / height of the whole view (a whole video wall)
 
 uniform vec3 u_street_sky_dark;
 uniform vec3 u_street_sky_light;

@@ -13,7 +13,7 @@ using params::ParamId;
 
 namespace {
 gpu::PipelineDesc ocean_desc() {
-    return {.label = "ocean", .fragment = "ocean.frag"};
+    return {.label = "ocean", .vertex = "view_window.vert", .fragment = "ocean.frag"};
 }
 }  // namespace
 
@@ -44,16 +44,16 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
     const render::BuiltPipeline* built = ocean.pass.request(device, {}, ocean_desc);
     if (!built) return;
     const gpu::FrameTarget& frame = target.target;
-    const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
-    const render::ViewBasis cam = render::view_basis(params.get<ParamId::ocean_camera_position>(),
-                                                     params.get<ParamId::ocean_camera_target>(),
-                                                     params.get<ParamId::camera_fov>(), aspect);
+    const render::ViewBasis cam = render::view_basis(
+        params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
+        params.get<ParamId::camera_fov>(), target.view.view_aspect(frame.size));
     auto pass = device.begin_pass({.label = "ocean", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(built->pipeline);
     render::set_param_uniforms(pass, built->params, params);
     const OceanTime ot = ocean_time(clock.sim_time, params.get<ParamId::ocean_speed>());
     pass.set("u_octave_shift", std::span<const glm::vec4>(ot.shift))
         .set("u_octave_cells", std::span<const glm::ivec2>(ot.cells))
+        .set("u_view_window", target.view.uniform())
         .set("u_cam_forward", cam.forward)
         .set("u_cam_right", cam.right)
         .set("u_cam_up", cam.up)

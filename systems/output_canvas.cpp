@@ -30,7 +30,10 @@ struct CanvasLayout {
 
 CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size) {
     CanvasLayout l;
-    l.degrees = 90 * static_cast<int>(params.get<params::ParamId::display_rotation>());
+    // wall.rotation turns a screen of a video wall the same way (the README's portrait walls).
+    const int quarter_turns = static_cast<int>(params.get<params::ParamId::display_rotation>()) +
+                              params.get<params::ParamId::wall_rotation>();
+    l.degrees = 90 * (quarter_turns % 4);
     const glm::ivec2 turned = l.degrees % 180 ? glm::ivec2(display_size.y, display_size.x) : display_size;
     const float scale = params.get<params::ParamId::render_scale>();
     l.size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));

@@ -1,7 +1,8 @@
 #pragma once
 // The canvas between the scene and the screen, for what the display cannot do itself:
-// - display.rotation (0, 90, 180, 270, clockwise as seen on the screen), done in GL: the scene renders
-//   upright into a canvas the size of the turned screen, and a last pass turns it onto the display;
+// - display.rotation (0, 90, 180, 270, clockwise as seen on the screen), plus wall.rotation's quarter
+//   turns, done in GL: the scene renders upright into a canvas the size of the turned screen, and a last
+//   pass turns it onto the display;
 // - render.scale below 1: the canvas is that fraction of the screen, and the last pass scales it up
 //   with bilinear filtering;
 // - display.brightness below 1: the last pass multiplies every colour channel by it, once, on the

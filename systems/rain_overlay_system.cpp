@@ -9,7 +9,10 @@ using params::ParamId;
 
 namespace {
 gpu::PipelineDesc rain_desc() {
-    return {.label = "rain streaks", .fragment = "rain_streaks.frag", .blend = gpu::Blend::Alpha};
+    return {.label = "rain streaks",
+            .vertex = "view_window.vert",
+            .fragment = "rain_streaks.frag",
+            .blend = gpu::Blend::Alpha};
 }
 }  // namespace
 
@@ -34,7 +37,8 @@ void rain_overlay_system(gpu::Device& device, const params::Params& params, cons
     pass.set_pipeline(built->pipeline);
     render::set_param_uniforms(pass, built->params, params);
     pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.get<ParamId::overlay_rain_speed>()))
-        .set("u_resolution", glm::vec2(frame.size))
+        .set("u_view_window", target.view.uniform())
+        .set("u_resolution", target.view.view_size(frame.size))
         .set("u_seed", params.get<ParamId::rain_seed>());
     pass.draw_fullscreen();
 }

@@ -16,6 +16,7 @@ namespace {
 
 gpu::PipelineDesc puddle_desc(const render::PuddleVariant& v, bool surface_unorm) {
     return {.label = "puddle",
+            .vertex = "view_window.vert",
             .fragment = "puddle.frag",
             .defines = render::variant_defines(v, surface_unorm),
             .textures = {"u_surface", "u_env", "u_ground"}};
@@ -56,11 +57,11 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         renderer.pipeline(device, variant ? *variant : render::choose_puddle_variant(params, rgbm));
     if (!pipeline) return;
 
-    // Everything uniform across the screen is worked out here once, not per pixel.
-    const float aspect = static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1));
+    // Everything uniform across the screen is worked out here once, not per pixel. The camera is the whole
+    // view's: a tile of a wall shows its part of that frustum.
     const render::ViewBasis cam =
         render::view_basis(params.get<ParamId::camera_position>(), params.get<ParamId::camera_target>(),
-                           params.get<ParamId::camera_fov>(), aspect);
+                           params.get<ParamId::camera_fov>(), target.view.view_aspect(frame.size));
     const float a = params.get<ParamId::environment_rotation>();
     // Column-major rotation about +Y.
     const glm::mat3 env_matrix(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
@@ -71,7 +72,8 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
     render::set_param_uniforms(pass, pipeline->params, params);
-    pass.set("u_cam_forward", cam.forward)
+    pass.set("u_view_window", target.view.uniform())
+        .set("u_cam_forward", cam.forward)
         .set("u_cam_right", cam.right)
         .set("u_cam_up", cam.up)
         .set("u_cam_scale", cam.scale)

@@ -6,6 +6,7 @@
 #include "params/param_store.hpp"
 #include "render/pipeline_cache.hpp"
 #include "render/puddle_variant.hpp"
+#include "render/view_window.hpp"
 #include "systems/camera_environment.hpp"
 #include "systems/environment_system.hpp"
 #include "systems/surface_system.hpp"
@@ -13,9 +14,12 @@
 
 namespace puddle::systems {
 
-// Resource: where this frame goes, set by the run loop from the display each frame.
+// Resource: where this frame goes, and which window of the whole view it shows (a video wall's tile;
+// all of it on a single screen), set by the run loop from the display each frame. The scene passes draw
+// with view_window.vert and set u_view_window from `view`.
 struct RenderTarget {
     gpu::FrameTarget target;
+    render::ViewWindow view;
 };
 
 using PuddlePipelines =

@@ -14,7 +14,7 @@ using params::ParamId;
 
 namespace {
 gpu::PipelineDesc street_desc() {
-    return {.label = "street", .fragment = "street.frag"};
+    return {.label = "street", .vertex = "view_window.vert", .fragment = "street.frag"};
 }
 
 // Source i of a kind: its period and phase offset from integer hashes of (i, salt, seed), as street.frag
@@ -79,7 +79,8 @@ void street_system(gpu::Device& device, const params::Params& params, const Fram
     pass.set_pipeline(built->pipeline);
     render::set_param_uniforms(pass, built->params, params);
     const StreetTime st = street_time(params, clock.sim_time);
-    pass.set("u_aspect", static_cast<float>(frame.size.x) / static_cast<float>(std::max(frame.size.y, 1)))
+    pass.set("u_view_window", target.view.uniform())
+        .set("u_aspect", target.view.view_aspect(frame.size))
         .set("u_lightning_phase", st.lightning_phase)
         .set("u_cloud_shift", std::span<const float>(st.cloud_shift))
         .set("u_cloud_cells", std::span<const int>(st.cloud_cells))

@@ -24,6 +24,7 @@
 #include "io/gpio_backend.hpp"
 #include "params/config_loader.hpp"
 #include "params/param_docs.hpp"
+#include "params/wall_check.hpp"
 #include "platform/console_mode.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
@@ -116,6 +117,7 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
         systems::activate_schedule(tuning, systems::system_wall_seconds());
     } else {
         spdlog::info("config: none given, built-in defaults (see puddle --list-params)");
+        if (auto r = params::check_wall(tuning.layers.compose(), {}); !r) return r.error();  // --set alone
     }
     if (auto r = io::check_gpio_spec(o.gpio); !r) return r.error();
     // Knob and remote values share the state file (ParamLayers); without either there is none.

@@ -1,15 +1,36 @@
 #include "app/frame_systems.hpp"
 
+#include <spdlog/spdlog.h>
+
+#include <glm/common.hpp>
 #include <utility>
 
 #include "ecs/frame_time.hpp"
+#include "render/view_window.hpp"
 
 namespace puddle::app {
 
 void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
                         systems::OutputCanvas& canvas, systems::RenderTarget& target) {
     display.make_current();  // another engine, or a test, may have made its own current since
-    target.target = systems::begin_canvas_frame(device, params, canvas, display.frame_target());
+    const gpu::FrameTarget screen = display.frame_target();
+    target.target = systems::begin_canvas_frame(device, params, canvas, screen);
+    // The wall's bezels are in the screen's pixels, and its tiles are upright: the screen turned as the
+    // picture is (not at all when the canvas could not be made), whatever render.scale is.
+    const glm::ivec2 upright =
+        canvas.quarter_turns % 2 ? glm::ivec2(screen.size.y, screen.size.x) : screen.size;
+    const render::ViewWindow window = render::wall_window(params, glm::vec2(upright));
+    if (window != target.view && window != render::ViewWindow{}) {  // said at start-up and at each change
+        const glm::vec2 view = window.view_size(upright);
+        // Rounded, and + 0 so that the top row is at 0, not -0.
+        const glm::vec2 corner =
+            glm::round(glm::vec2(window.origin.x, 1.0f - window.origin.y - window.extent.y) * view) + 0.0f;
+        spdlog::info(
+            "wall: this screen shows {}x{} pixels at ({:.0f}, {:.0f}) from the top left of the "
+            "{:.0f}x{:.0f} view",
+            upright.x, upright.y, corner.x, corner.y, view.x, view.y);
+    }
+    target.view = window;
 }
 
 assets::Image read_display(platform::Display& display, gpu::Device& device) {

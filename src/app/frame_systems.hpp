@@ -1,7 +1,8 @@
 #pragma once
 // The frame's start and end, as systems over the display (a World resource, platform::Display):
 //   input:   begin frame   makes the display's context current and picks where the scene renders
-//                          (the display, or the output canvas when it is turned or scaled)
+//                          (the display, or the output canvas when it is turned or scaled) and which
+//                          window of the whole view it shows (a video wall's tile, render/view_window.hpp)
 //   present: output canvas turns and scales the canvas onto the display
 //            capture       reads the frame back when asked (screenshots, tests)
 //            present       shows it (swap, page flip, or the headless fence); nothing while the output is off

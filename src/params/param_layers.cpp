@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "params/wall_check.hpp"
 #include "util/safe_quote.hpp"
 
 namespace puddle::params {
@@ -52,6 +53,12 @@ Result<void> ParamLayers::set_config(Config config) {
                               config.path, e.line, e.number, *e.preset, inner);
         }
     }
+    // The rules across keys, on the preset, the config and the command line together.
+    Params trial;
+    apply_config(preset, trial, ParamSource::Preset);
+    apply_config(config, trial, ParamSource::Config);
+    for (const ConfigEntry& e : command_line_) trial.set(e.id, e.value, ParamSource::CommandLine);
+    if (auto r = check_wall(trial, config); !r) return r;
     config_ = std::move(config);
     preset_ = std::move(preset);
     preset_name_ = name;

@@ -22,8 +22,8 @@ class ParamLayers {
 public:
     ParamLayers(Presets presets, std::vector<ConfigEntry> command_line);
 
-    // Makes `config` the config layer, with the preset it names. Validates everything first: on error
-    // nothing changes (the last good config keeps running).
+    // Makes `config` the config layer, with the preset it names. Validates everything first, the rules
+    // across keys too (params/wall_check.hpp): on error nothing changes (the last good config keeps running).
     Result<void> set_config(Config config);
     // The same with the presets read again (their files may have been edited): both or neither change.
     Result<void> set_presets_and_config(Presets presets, Config config);

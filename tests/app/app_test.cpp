@@ -107,6 +107,20 @@ TEST_F(LoadTuning, AGpioTypoIsAConfigErrorEvenWithoutKnobs) {
         << r.error().message;
 }
 
+// Start-up refuses a screen placed off the wall (params/wall_check.hpp), here by a --set over the config.
+TEST_F(LoadTuning, AScreenOffTheWallIsAConfigError) {
+    CliOptions o = options("[wall]\ncolumns = 2\nrows = 2\n");
+    o.sets = {"wall.row=1", "wall.column=2"};
+    auto r = load_tuning(o, true);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ExitCode::Config);
+    EXPECT_EQ(
+        r.error().message,
+        "--set wall.column=2: wall.column = 2 is out of range: allowed 0 to 1 (0-based; wall.columns = 2)");
+    o.sets = {"wall.row=1", "wall.column=1"};
+    EXPECT_EQ(compose(o).get<ParamId::wall_column>(), 1);
+}
+
 TEST_F(LoadTuning, AConfigErrorIsReturnedAsItIs) {
     CliOptions o = options("[rain]\nseed = \"five\"\n");
     auto r = load_tuning(o, true);
