@@ -24,8 +24,8 @@ std::string utc_text(std::int64_t ns) {
 
 }  // namespace
 
-void synced_changes_system(const WallClock& wall, const FrameClock& clock, LiveTuning& tuning,
-                           params::Params& params, WallSteps& steps) {
+void synced_changes_system(const WallClock& wall, const FrameClock& clock, const OutputPower& power,
+                           LiveTuning& tuning, params::Params& params, WallSteps& steps) {
     if (!tuning.layers_changed) return;
     if (steps.change_step == 0) {
         const std::int64_t at = tuning.apply_at_ns.value_or(
@@ -35,7 +35,10 @@ void synced_changes_system(const WallClock& wall, const FrameClock& clock, LiveT
         spdlog::info("{}: applies at {} (step {}), with the wall", tuning.change_reason, utc_text(at),
                      steps.change_step);
     }
-    if (clock.step_index + 1 < steps.change_step) return;
+    const bool due = power.on ? clock.step_index + 1 >= steps.change_step
+                              : step_at(wall.now_ns(), params.get<ParamId::wave_steps_per_second>()) >=
+                                    static_cast<std::int64_t>(steps.change_step);
+    if (!due) return;
     steps.change_step = 0;
     tuning.apply_at_ns.reset();
     tuning.layers_changed = false;

@@ -10,6 +10,7 @@
 #include "params/param_store.hpp"
 #include "systems/frame_clock.hpp"
 #include "systems/live_tuning.hpp"
+#include "systems/output_power.hpp"
 #include "systems/wall_clock.hpp"
 #include "systems/wall_steps.hpp"
 
@@ -17,8 +18,10 @@ namespace puddle::systems {
 
 // Input stage, with wall.clock = "realtime", after live tuning and before wall steps: applies the layers'
 // pending change (LiveTuning::layers_changed) once the next step to simulate is its step, and until then
-// holds that step back (WallSteps::change_step). Logs when the change will apply.
-void synced_changes_system(const WallClock& wall, const FrameClock& clock, LiveTuning& tuning,
-                           params::Params& params, WallSteps& steps);
+// holds that step back (WallSteps::change_step). While the output is off no step is simulated, so there
+// the change applies once the clock reaches its step (it may turn the output back on). Logs when the change
+// will apply.
+void synced_changes_system(const WallClock& wall, const FrameClock& clock, const OutputPower& power,
+                           LiveTuning& tuning, params::Params& params, WallSteps& steps);
 
 }  // namespace puddle::systems

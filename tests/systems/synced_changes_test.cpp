@@ -37,7 +37,7 @@ struct Screen {
     // intensity it simulated with.
     void frame() {
         live_tuning_step(*tuning, params, static_cast<double>(now) * 1e-9);
-        synced_changes_system(wall, clock, *tuning, params, steps);
+        synced_changes_system(wall, clock, power, *tuning, params, steps);
         wall_steps_system(wall, power, look, params, steps, clock);
         for (int i = 0; i < clock.steps_due; ++i) {
             begin_step_system(clock);
@@ -79,6 +79,23 @@ TEST(SyncedChanges, AConfigEditReadAtDifferentMomentsAppliesAtTheSameStep) {
     EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(read_at, 1.0), 60.0));
     EXPECT_EQ(a.steps.change_step, 0u);
     EXPECT_FALSE(a.tuning->layers_changed);
+}
+
+// While the output is off nothing is simulated, yet a pending change still applies at its time. Held for a
+// step that never came, it never applied: a reload setting display.power = true left the screen dark.
+TEST(SyncedChanges, AChangeWhileTheOutputIsOffAppliesAtItsTime) {
+    Screen a(0);
+    for (int i = 0; i < 30; ++i) a.frame();
+    a.power.on = false;
+    a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
+    a.tuning->layers_changed = true;
+    a.tuning->change_reason = "remote";
+    const std::int64_t at = a.now + 300'000'000;
+    a.tuning->apply_at_ns = at;
+    for (int i = 0; i < 30; ++i) a.frame();
+    EXPECT_EQ(a.params.get<ParamId::rain_intensity>(), 0.8f);
+    EXPECT_FALSE(a.tuning->layers_changed);
+    EXPECT_GE(a.now, at);
 }
 
 // A remote message's apply_at is the step, wherever in the period it was read.
