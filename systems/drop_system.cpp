@@ -62,12 +62,16 @@ void drop_system(const params::Params& params, const FrameClock& clock, ecs::Wor
         const double t = scaled + 0.7 * static_cast<double>(drop_phase_offset(slot));
         const auto cycle = static_cast<std::int64_t>(std::floor(t));
         Drop* drop = e.valid() ? world.get<Drop>(e) : nullptr;
+        const DropSample s = sample_drop(seed, slot, cycle, intensity);
         if (!drop || drop->cycle != cycle) {  // a new cycle: the old drop retires, a new one falls elsewhere
             if (e.valid()) world.despawn(e);
-            const DropSample s = sample_drop(seed, slot, cycle, intensity);
             e = world.spawn();
             drop = &world.add(e, Drop{slot, cycle, s.position, s.strength});
         }
+        // Sampled again every step, not kept from the cycle's start: a new seed or intensity applies at
+        // once, as on a screen that starts now, so the drops are a function of seed, parameters and step.
+        drop->position = s.position;
+        drop->strength = s.strength;
         const float amount = drop->strength * drop_activation(t - static_cast<double>(cycle));
         if (amount > 0.01f)
             live.drops[static_cast<std::size_t>(live.count++)] =

@@ -22,13 +22,18 @@ struct FrameClock {
     int steps_due = 0;             // simulate-stage runs this frame
     int max_steps_per_frame = 16;  // a stalled frame drops time rather than spiralling
     std::uint64_t dropped_steps = 0;
+    // The simulation starts again from a flat field at the next step whenever this changes (a wall screen
+    // joining the wall clock or re-syncing, systems/wall_steps.hpp); the wave system clears its field
+    // once per change.
+    std::uint64_t field_generation = 0;
 };
 
-// Input stage: turns this frame's time into steps_due at wave.steps_per_second.
+// Input stage, with wall.clock = "frame": turns this frame's time into steps_due at
+// wave.steps_per_second. (With "realtime" the wall clock sets them: systems/wall_steps.hpp.)
 void frame_clock_system(const ecs::FrameTime& time, const params::Params& params, FrameClock& clock);
-// Input stage, after frame_clock_system: while the output is off the due steps are counted as done
-// without running (no GPU work), so sim_time keeps up with the clock and the picture comes back at the
-// current time, not where it stopped.
+// Input stage, after frame_clock_system (wall.clock = "frame"): while the output is off the due steps are
+// counted as done without running (no GPU work), so sim_time keeps up with the clock and the picture comes
+// back at the current time, not where it stopped.
 void hold_steps_while_off(const OutputPower& power, FrameClock& clock);
 // First simulate-stage system: advances sim_time by one step.
 void begin_step_system(FrameClock& clock);

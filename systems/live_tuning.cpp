@@ -184,6 +184,7 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
         start_state_save(t);
 
     if (!t.layers_changed) return;
+    if (params.get<ParamId::wall_clock>() == params::WallClockMode::realtime) return;  // synced_changes.hpp
     t.layers_changed = false;
     apply_layers(t, params, t.change_reason);
 }

@@ -49,6 +49,9 @@ struct LiveTuning {
     bool layers_changed = false;
     std::uint64_t config_generation = 0;  // counts the reloads that applied (the schedule system follows it)
     const char* change_reason = "";       // for the log line
+    // wall.clock = "realtime": when the pending change applies, as a remote message asked (ns since the
+    // Unix epoch); none: at the next change boundary (systems/synced_changes.hpp).
+    std::optional<std::int64_t> apply_at_ns;
 };
 
 // Creates the knobs of the current config (on `tuning.gpio`, when there are any) and starts watching
@@ -58,7 +61,9 @@ void start_live_tuning(LiveTuning& tuning);
 // last good configuration keeps running. Returns true when the new file was applied.
 bool reload_config(LiveTuning& tuning);
 // One input-stage step at time `now`: config changes, knob events, the delayed state save, and the
-// recomposed `params` when a layer changed (logged as one line naming what changed).
+// recomposed `params` when a layer changed (logged as one line naming what changed). With
+// wall.clock = "realtime" a changed layer is left pending (layers_changed) for synced_changes_system,
+// which applies it at the same step on every screen of a wall.
 void live_tuning_step(LiveTuning& tuning, params::Params& params, double now);
 // Makes `params` the layers' composition now and logs one line: "REASON: rain.intensity 0.3 -> 0.5 (knob)".
 void apply_layers(LiveTuning& tuning, params::Params& params, std::string_view reason);

@@ -19,6 +19,9 @@
 #include "systems/scene_select.hpp"
 #include "systems/street_system.hpp"
 #include "systems/surface_system.hpp"
+#include "systems/synced_changes.hpp"
+#include "systems/wall_clock.hpp"
+#include "systems/wall_steps.hpp"
 #include "systems/wave_system.hpp"
 
 namespace puddle::systems {
@@ -128,6 +131,8 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     if (auto r = open_camera_feed(world.insert_resource<CameraFeed>(), params); !r) return r;
 
     world.insert_resource<FrameClock>();
+    if (!world.try_resource<WallClock>()) world.insert_resource<WallClock>();  // the schedule's, if installed
+    world.insert_resource<WallSteps>();
     world.insert_resource<DropSlots>();
     world.insert_resource<LiveDrops>();
     world.storage<Drop>().reserve(max_drops);
@@ -149,7 +154,13 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.set_step_counter([](ecs::World& w) { return w.resource<FrameClock>().steps_due; });
 
     using ecs::Stage;
-    schedule.add(Stage::Input, "frame clock", frame_clock_system);
+    using params::WallClockMode;
+    if (world.try_resource<LiveTuning>())
+        schedule.add(Stage::Input, "synced changes", synced_changes_system)
+            .run_if(wall_clock_is(WallClockMode::realtime));
+    schedule.add(Stage::Input, "wall steps", wall_steps_system)
+        .run_if(wall_clock_is(WallClockMode::realtime));
+    schedule.add(Stage::Input, "frame clock", frame_clock_system).run_if(wall_clock_is(WallClockMode::frame));
     schedule.add(Stage::Input, "hold steps while off", hold_steps_while_off);
     schedule.add(Stage::Input, "wave rebuild", wave_rebuild_system);
     schedule.add(Stage::Input, "environment reload", environment_reload_system);

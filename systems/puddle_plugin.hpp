@@ -11,7 +11,8 @@ namespace puddle::systems {
 
 // Needs the resources gpu::Device, params::Params and RenderTarget in the world. Loads the environment
 // and ground (errors: exit code 3), builds the GPU resources and registers:
-//   input:    frame clock, wave rebuild, environment reload, look switch, camera feed
+//   input:    synced changes (when LiveTuning is installed), wall steps | frame clock (wall.clock),
+//             hold steps while off, wave rebuild, environment reload, look switch, camera feed
 //   simulate: begin step, drops, wave               (once per fixed step; if the wave field is in use)
 //   render:   surface | analytic ripples | grid drops (the puddle's surface, by the drops shown)
 //             camera environment

@@ -110,7 +110,7 @@ bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params,
 }
 
 void schedule_system(const WallClock& clock, ScheduleRun& run, LiveTuning& tuning, params::Params& params) {
-    schedule_step(run, tuning, params, clock.now());
+    schedule_step(run, tuning, params, clock.seconds());
 }
 
 void activate_schedule(LiveTuning& tuning, double now) {
@@ -143,7 +143,7 @@ std::string local_time_text(double t) {
 }
 
 Result<void> add_schedule(ecs::World& world, ecs::Schedule& schedule) {
-    world.insert_resource<WallClock>();
+    if (!world.try_resource<WallClock>()) world.insert_resource<WallClock>();
     world.insert_resource<ScheduleRun>();
     schedule.add(ecs::Stage::Input, "schedule", schedule_system);
     return {};

@@ -17,16 +17,12 @@
 #include "params/schedule_spec.hpp"
 #include "schedule/calendar.hpp"
 #include "systems/live_tuning.hpp"
+#include "systems/wall_clock.hpp"
 
 namespace puddle::systems {
 
 // Seconds since the Unix epoch (UTC), from CLOCK_REALTIME.
 double system_wall_seconds();
-
-// Resource: the wall clock the schedule reads. Tests replace `now`.
-struct WallClock {
-    std::function<double()> now = system_wall_seconds;
-};
 
 // Resource.
 struct ScheduleRun {
@@ -58,8 +54,8 @@ std::string describe_transition(const params::Config& config, const schedule::Tr
 // "Wed 2026-12-02 07:00 CET": local time, as the system's time zone gives it.
 std::string local_time_text(double t);
 
-// Inserts WallClock and ScheduleRun and adds schedule_system to the input stage (after live tuning, which
-// it needs).
+// Inserts WallClock (systems/wall_clock.hpp) and ScheduleRun and adds schedule_system to the input stage
+// (after live tuning, which it needs).
 Result<void> add_schedule(ecs::World& world, ecs::Schedule& schedule);
 
 }  // namespace puddle::systems

@@ -9,6 +9,18 @@ namespace puddle::systems {
 
 using params::ParamId;
 
+namespace {
+
+// A flat, still surface: both steps zero.
+void clear_texture(gpu::Device& device, gpu::Texture& texture, int n) {
+    device.begin_pass({.label = "wave clear",
+                       .target = {&texture, {n, n}},
+                       .load = gpu::LoadOp::Clear,
+                       .clear = {0, 0, 0, 0}});
+}
+
+}  // namespace
+
 Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field) {
     const int n = params.get<ParamId::wave_resolution>();
     const bool fixed_point = !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
@@ -50,11 +62,7 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
                                               .render_target = true});
         if (!texture) return texture.error();
         f.textures[static_cast<std::size_t>(i)] = std::move(texture).value();
-        // A flat, still surface: clear both steps to zero.
-        device.begin_pass({.label = "wave clear",
-                           .target = {&f.textures[static_cast<std::size_t>(i)], {n, n}},
-                           .load = gpu::LoadOp::Clear,
-                           .clear = {0, 0, 0, 0}});
+        clear_texture(device, f.textures[static_cast<std::size_t>(i)], n);
     }
     field.textures = std::move(f.textures);
     field.current = 0;
@@ -63,10 +71,14 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     return {};
 }
 
-void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops,
-                 WaveField& field) {
+void wave_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                 const LiveDrops& drops, WaveField& field) {
     const render::BuiltPipeline* step = field.step_pipelines.find(field.encoding());
     if (!step) return;  // never: build_wave_field makes a field only with its pipeline built
+    if (field.generation != clock.field_generation) {
+        field.generation = clock.field_generation;
+        for (gpu::Texture& texture : field.textures) clear_texture(device, texture, field.resolution);
+    }
     const auto next = static_cast<std::size_t>(1 - field.current);
     field.drops.write(std::as_bytes(std::span(drops.drops.data(), static_cast<std::size_t>(drops.count))));
     auto pass = device.begin_pass({.label = "wave step",

@@ -5,6 +5,7 @@
 // times 65536), which every GLES 3.0 GPU can render to; a test checks both give the same field.
 
 #include <array>
+#include <cstdint>
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -30,7 +31,8 @@ struct WaveField {
     bool fixed_point = false;
     WaveStepPipelines step_pipelines;  // the step reads wave.damping
     gpu::Sampler nearest;
-    gpu::Buffer drops;  // std140 vec4[max_drops]
+    gpu::Buffer drops;             // std140 vec4[max_drops]
+    std::uint64_t generation = 0;  // the FrameClock::field_generation it was last cleared for
     // A field that could not be made: not retried every frame, only once the parameters change again.
     struct Request {
         int resolution = 0;
@@ -51,7 +53,9 @@ struct WaveField {
 // when it does not fit; a step shader that does not build) `field` is left as it was.
 Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field);
 
-// Simulate stage, once per fixed step: inject the live drops and advance the field one step.
-void wave_system(gpu::Device& device, const params::Params& params, const LiveDrops& drops, WaveField& field);
+// Simulate stage, once per fixed step: inject the live drops and advance the field one step. A new
+// FrameClock::field_generation (a wall screen's warm-up) first makes the field flat and still.
+void wave_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                 const LiveDrops& drops, WaveField& field);
 
 }  // namespace puddle::systems

@@ -105,6 +105,20 @@ void check_saved_state(Report& r, const CliOptions& o) {
                          loaded.state->preset ? ", preset " : "", loaded.state->preset.value_or("")));
 }
 
+// The system clock as the kernel sees it (adjtimex): walls (wall.clock = "realtime") need it synchronised.
+void check_clock(Report& r, const systems::ClockSync& sync, bool realtime) {
+    r.section("clock");
+    const std::string what = "system clock: " + systems::describe(sync);
+    if (sync.synchronised)
+        r.ok(what);
+    else if (realtime)
+        r.fix(what +
+              "; wall.clock = \"realtime\" needs it: set up chrony or linuxptp (README \"Video walls\")");
+    else
+        r.absent(what + " (only walls, wall.clock = \"realtime\", need it)");
+    r.note(fmt::format("wall.clock = \"{}\"", realtime ? "realtime" : "frame"));
+}
+
 }  // namespace
 
 std::vector<GpuFeatureLine> gpu_feature_lines(const gpu::Capabilities& caps, bool dmabuf_import) {
@@ -136,6 +150,7 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
 
     r.section("config");
     std::vector<params::KnobSpec> knobs;
+    bool realtime = false;  // wall.clock in the config
     if (config_path.empty()) {
         r.absent("no config file (/etc/puddle/puddle.toml does not exist): built-in defaults are used");
     } else {
@@ -151,10 +166,12 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
                              config->knobs.size(), config->preset ? ", preset " : "",
                              config->preset.value_or("")));
             knobs = config->knobs;
+            realtime = layers.compose().get<params::ParamId::wall_clock>() == params::WallClockMode::realtime;
             check_schedule(r, *config);
         }
     }
     if (!knobs.empty()) check_saved_state(r, o);
+    check_clock(r, sources.clock_sync(), realtime);
 
     r.section("display: DRM/KMS (--backend kms)");
     const auto cards = platform::list_drm_cards(sources.dri_folder);

@@ -1,14 +1,16 @@
 #pragma once
 // `puddle --check`: the one command a technician runs on a board. It looks at everything Puddle uses
-// (the config, DRM/KMS screens, the GPU through EGL/GLES, GPIO chips and the configured knobs, V4L2
-// cameras) and prints, for each, OK or what to fix. Missing hardware is reported, not an error: exit 0
-// unless the config is invalid (2) or no GLES 3 context can be made (4).
+// (the config, the system clock's synchronisation, DRM/KMS screens, the GPU through EGL/GLES, GPIO chips
+// and the configured knobs, V4L2 cameras) and prints, for each, OK or what to fix. Missing hardware is
+// reported, not an error: exit 0 unless the config is invalid (2) or no GLES 3 context can be made (4).
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "gpu/capabilities.hpp"
+#include "systems/wall_clock.hpp"
 
 namespace puddle::app {
 
@@ -20,6 +22,8 @@ struct CheckSources {
     std::string dri_folder = "/dev/dri";  // DRM card nodes card0, card1, ... (platform::list_drm_cards)
     std::string video_folder = "/dev";    // V4L2 nodes video0, video1, ...
     std::FILE* out = stdout;
+    // The kernel's view of the system clock (adjtimex); tests give a status of their own.
+    std::function<systems::ClockSync()> clock_sync = systems::read_clock_sync;
 };
 
 // Writes the report; returns the exit code.

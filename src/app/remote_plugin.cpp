@@ -36,14 +36,17 @@ Result<void> apply(RemoteControl& r, systems::LiveTuning& t, FrameCapture& captu
     using remote::Command;
     if (const auto* set = std::get_if<remote::SetParam>(&request)) {
         t.layers.set_remote(set->id, set->value);
+        if (set->apply_at_ns) t.apply_at_ns = set->apply_at_ns;  // wall.clock = "realtime" only reads it
         t.layers_changed = true;
         t.change_reason = "remote";
         t.state_dirty = true;
         t.last_knob_change = t.last_step;
         return {};
     }
-    if (const auto* preset = std::get_if<remote::SelectPreset>(&request))
+    if (const auto* preset = std::get_if<remote::SelectPreset>(&request)) {
+        if (preset->apply_at_ns) t.apply_at_ns = preset->apply_at_ns;
         return select_preset(t, preset->name, "remote");
+    }
     if (std::holds_alternative<remote::HomeAssistantOnline>(request)) {
         r.discovery_due = true;
         return {};

@@ -1,5 +1,7 @@
 #include "remote/remote_request.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <iterator>
 
 #include "util/safe_quote.hpp"
@@ -43,20 +45,46 @@ Result<Request> set_param(const RemoteSettings& s, std::string_view topic, std::
     return Request(SetParam{d->id, std::move(*value)});
 }
 
+constexpr std::string_view apply_at_key = " apply_at=";
+
+// Splits " apply_at=<seconds>" off the end of `payload`.
+Result<ApplyAt> take_apply_at(std::string_view topic, std::string_view& payload) {
+    const std::size_t at = payload.rfind(apply_at_key);
+    if (at == std::string_view::npos) return ApplyAt{};
+    const std::string text(trim(payload.substr(at + apply_at_key.size())));
+    payload = trim(payload.substr(0, at));
+    char* end = nullptr;
+    const double seconds = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+    // Up to the year 2262, where nanoseconds since 1970 leave an int64.
+    if (text.empty() || *end != '\0' || !(seconds > 0.0 && seconds < 9.2e9))
+        return make_error(ExitCode::Config,
+                          "remote: {}: apply_at '{}' is not a time in seconds since the Unix epoch (such as "
+                          "1764590402.5)",
+                          safe_quote(topic), safe_quote(text));
+    return ApplyAt{std::llround(seconds * 1e9)};
+}
+
 }  // namespace
 
 Result<Request> parse_request(const RemoteSettings& s, const Inbound& m) {
     if (m.size > max_payload_bytes)
         return make_error(ExitCode::Config, "remote: {}: payload of {} bytes refused (at most {})",
                           safe_quote(m.topic), m.size, max_payload_bytes);
-    const std::string_view payload = trim(m.payload);
+    std::string_view payload = trim(m.payload);
     if (m.topic == "homeassistant/status") {
         if (payload == "online") return Request(HomeAssistantOnline{});
         return Request(Ignored{});
     }
     const std::string_view rest = after_prefix(s, m.topic);
-    if (rest.starts_with("set/")) return set_param(s, m.topic, rest.substr(4), payload);
-    if (rest == "preset/set") return Request(SelectPreset{payload == "none" ? "" : std::string(payload)});
+    if (rest.starts_with("set/") || rest == "preset/set") {
+        auto apply_at = take_apply_at(m.topic, payload);
+        if (!apply_at) return apply_at.error();
+        if (rest == "preset/set")
+            return Request(SelectPreset{payload == "none" ? "" : std::string(payload), *apply_at});
+        auto request = set_param(s, m.topic, rest.substr(4), payload);
+        if (request) std::get<SetParam>(*request).apply_at_ns = *apply_at;
+        return request;
+    }
     if (rest == "command") {
         for (std::size_t i = 0; i < std::size(command_names); ++i)
             if (payload == command_names[i]) return Request(static_cast<Command>(i));

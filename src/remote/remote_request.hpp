@@ -4,6 +4,8 @@
 // it asks for. A bad message is an error naming its topic, and nothing of it applies.
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -25,12 +27,19 @@ struct Inbound {
     std::size_t size = 0;
 };
 
+// When a change is to apply, for the screens of a wall (wall.clock = "realtime"): nanoseconds since the
+// Unix epoch; none: at the next change boundary (systems/synced_changes.hpp). A payload asks for it by
+// ending in " apply_at=<seconds since the Unix epoch>", e.g. "0.5 apply_at=1764590402.5".
+using ApplyAt = std::optional<std::int64_t>;
+
 struct SetParam {
     params::ParamId id;
     params::ParamValue value;
+    ApplyAt apply_at_ns;
 };
 struct SelectPreset {
     std::string name;  // "" (or "none"): the config's preset
+    ApplyAt apply_at_ns;
 };
 enum class Command { NextPreset, PreviousPreset, Save, Screenshot, Reload };
 struct HomeAssistantOnline {};  // homeassistant/status = online: publish discovery again
@@ -38,10 +47,11 @@ struct Ignored {};              // homeassistant/status = offline
 using Request = std::variant<SetParam, SelectPreset, Command, HomeAssistantOnline, Ignored>;
 
 // Topics: <prefix>/set/<parameter>, <prefix>/preset/set and <prefix>/command, under `settings.prefix`
-// or `settings.fleet_prefix`, and homeassistant/status. Errors (one line, "remote: TOPIC: why"): payload
+// or `settings.fleet_prefix`, and homeassistant/status; set and preset/set payloads may end in an
+// apply_at (above). Errors (one line, "remote: TOPIC: why"): payload
 // too large, a topic that is none of these, an unknown parameter (with the nearest name), one that is not
 // writable (remote.writable), a value of the wrong kind or out of range (what is allowed), an unknown
-// command (the list).
+// command (the list), an apply_at that is not a time.
 Result<Request> parse_request(const RemoteSettings& settings, const Inbound& message);
 
 // The commands as spelled on <prefix>/command, in Command's order.

@@ -322,5 +322,36 @@ TEST(Check, PrintsTheActiveScheduleEntriesAndTheNextTransition) {
               std::vector<std::string>{"  --    no [[schedule]] tables: the config applies at all hours"});
 }
 
+// The clock's section: the kernel's synchronisation status (adjtimex, injected here), to fix when the
+// config makes a wall screen of this one (wall.clock = "realtime"), merely noted otherwise.
+TEST(Check, SaysWhetherTheClockIsSynchronisedAndThatAWallNeedsIt) {
+    TempDir dir;
+    const std::string wall = dir.write("wall.toml", "[wall]\nclock = \"realtime\"\n");
+    const std::string alone = dir.write("alone.toml", "[rain]\ndrop_count = 40\n");
+    const std::string dri = node_folder(dir, "dri", {});
+    const std::string dev = node_folder(dir, "dev", {});
+    const auto unsynchronised = [] { return systems::ClockSync{.maximum_error_us = 16'000'000}; };
+    const auto synchronised = [] {
+        return systems::ClockSync{.synchronised = true, .estimated_error_us = 120, .maximum_error_us = 8400};
+    };
+    auto clock_lines = [&](const std::string& cfg, std::function<systems::ClockSync()> sync) {
+        const CommandResult o = check_here({"--gpio", "mock:", "--config", cfg},
+                                           {.dri_folder = dri, .video_folder = dev, .clock_sync = sync});
+        return sections(o.output)["[clock]"];
+    };
+    const auto wall_unsynced = clock_lines(wall, unsynchronised);
+    ASSERT_EQ(wall_unsynced.size(), 2u);
+    EXPECT_TRUE(wall_unsynced[0].starts_with("  FIX   system clock: NOT synchronised")) << wall_unsynced[0];
+    EXPECT_TRUE(has(wall_unsynced[0], "maximum error 16000.0 ms")) << wall_unsynced[0];
+    EXPECT_TRUE(has(wall_unsynced[0], "set up chrony or linuxptp")) << wall_unsynced[0];
+    EXPECT_EQ(wall_unsynced[1], "        wall.clock = \"realtime\"");
+    const auto alone_unsynced = clock_lines(alone, unsynchronised);
+    ASSERT_EQ(alone_unsynced.size(), 2u);
+    EXPECT_TRUE(alone_unsynced[0].starts_with("  --    system clock: NOT synchronised")) << alone_unsynced[0];
+    EXPECT_EQ(alone_unsynced[1], "        wall.clock = \"frame\"");
+    EXPECT_EQ(clock_lines(wall, synchronised)[0],
+              "  OK    system clock: synchronised, estimated error 0.120 ms (maximum 8.4 ms)");
+}
+
 }  // namespace
 }  // namespace puddle::test

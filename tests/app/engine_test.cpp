@@ -31,6 +31,8 @@ std::vector<std::string> binary_schedule() {
         "input/live tuning (writes LiveTuning, Params)",
         "input/schedule (reads WallClock; writes ScheduleRun, LiveTuning, Params)",
         "input/display power (reads Params; writes Display, Device, OutputPower, DisplayPower)",
+        "input/synced changes if wall.clock is realtime (reads WallClock, FrameClock, OutputPower; writes "
+        "LiveTuning, Params, WallSteps)",
     };
     lines.insert(lines.end(), test::puddle_plugin_schedule.begin(), test::puddle_plugin_schedule.end());
     for (const char* line :

@@ -199,7 +199,9 @@ TEST(FrameAllocation, SteadyStateFramesWithAScheduleAllocateNothing) {
                              },
                              systems::add_schedule, app::add_display_power, systems::add_puddle_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
-    (*engine)->world().resource<systems::WallClock>().now = [] { return 1.78e9 + 3600.0; };
+    (*engine)->world().resource<systems::WallClock>().now_ns = [] {
+        return std::int64_t{1'780'000'000 + 3600} * systems::ns_per_second;
+    };
     app::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);
     EXPECT_FLOAT_EQ((*engine)->params().get<params::ParamId::display_brightness>(), 0.5f);

@@ -44,7 +44,7 @@ TEST(ParamTypes, EveryEnumHasTheRegistrysChoicesInOrderAndItsDefault) {
     EXPECT_EQ(std::get<std::string>(decl(ParamId::id).default_value), choice_name(Type::def)) << name; \
     EXPECT_EQ(Params().get<ParamId::id>(), Type::def) << name;
 #include "params/params.def"
-    EXPECT_EQ(enums, 9);
+    EXPECT_EQ(enums, 10);  // wall.mode and wall.clock are the ninth and tenth
 }
 
 TEST(ParamTypes, ASpellingThatIsNotAnIdentifierKeepsItsSpelling) {

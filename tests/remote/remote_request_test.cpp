@@ -92,6 +92,27 @@ TEST(RemoteRequest, CommandsPresetsAndHomeAssistant) {
     EXPECT_TRUE(std::holds_alternative<Ignored>(ok("homeassistant/status", "offline")));
 }
 
+// A wall's screens switch together at a time the message names (issue 20, "Changes in step").
+TEST(RemoteRequest, ApplyAtIsTakenOffTheValueAsNanosecondsSinceTheEpoch) {
+    const auto set = std::get<SetParam>(ok("puddle/all/set/rain.intensity", "0.75 apply_at=1764590402.5"));
+    EXPECT_EQ(std::get<float>(set.value), 0.75f);
+    ASSERT_TRUE(set.apply_at_ns);
+    EXPECT_EQ(*set.apply_at_ns, 1'764'590'402'500'000'000LL);
+    EXPECT_FALSE(std::get<SetParam>(ok("puddle/all/set/rain.intensity", "0.75")).apply_at_ns);
+    const auto preset = std::get<SelectPreset>(ok("puddle/all/preset/set", "downpour apply_at=1764590403"));
+    EXPECT_EQ(preset.name, "downpour");
+    EXPECT_EQ(preset.apply_at_ns, 1'764'590'403'000'000'000LL);
+    for (const char* bad :
+         {"0.75 apply_at=", "0.75 apply_at=soon", "0.75 apply_at=-3", "0.75 apply_at=1e30"}) {
+        auto r = parse("puddle/all/set/rain.intensity", bad);
+        ASSERT_FALSE(r) << bad;
+        EXPECT_NE(r.error().message.find("remote: puddle/all/set/rain.intensity: apply_at '"),
+                  std::string::npos)
+            << r.error().message;
+        EXPECT_NE(r.error().message.find("is not a time in seconds since the Unix epoch"), std::string::npos);
+    }
+}
+
 TEST(RemoteSettings, AWorldReadablePasswordFileIsRefused) {
     test::TempDir dir;
     const std::string file = dir.write("pw", "s3cret\nignored\n");

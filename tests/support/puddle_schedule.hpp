@@ -10,7 +10,9 @@
 namespace puddle::test {
 
 inline const std::vector<std::string> puddle_plugin_schedule = {
-    "input/frame clock (reads FrameTime, Params; writes FrameClock)",
+    "input/wall steps if wall.clock is realtime (reads WallClock, OutputPower, ShownLook, Params; writes "
+    "WallSteps, FrameClock)",
+    "input/frame clock if wall.clock is frame (reads FrameTime, Params; writes FrameClock)",
     "input/hold steps while off (reads OutputPower; writes FrameClock)",
     "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
     "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
@@ -21,7 +23,8 @@ inline const std::vector<std::string> puddle_plugin_schedule = {
     "simulate/begin step (writes FrameClock)",
     "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, "
     "LiveDrops)",
-    "simulate/wave if the wave field is in use (reads Params, LiveDrops; writes Device, WaveField)",
+    "simulate/wave if the wave field is in use (reads Params, FrameClock, LiveDrops; writes Device, "
+    "WaveField)",
     "render/surface if the wave field is in use and output on (reads WaveField; writes Device, Surface)",
     "render/camera environment if output on (reads Params, Environment; writes Device, CameraEnvironment)",
     "render/analytic ripples if drops are analytic and output on (reads Params, FrameClock; writes Device, "

@@ -269,5 +269,29 @@ TEST(DropSystem, EntityCountNeverExceedsDropCountOverManyCycles) {
     EXPECT_LT(max_index, 16u);  // a despawned index is reused at once by the next spawn
 }
 
+// The simulation is a function of seed, parameters and step (issue 20): a screen that has run since step 0
+// and one that starts at step 100 see the same drops from there on, even when the seed and the intensity
+// changed in the middle of the drops' cycles. Drops used to keep the place and strength their cycle began
+// with, so the screen that ran through the change still had the old ones until each drop's next cycle.
+TEST(DropSystem, DropsAreAFunctionOfSeedParametersAndStepAlone) {
+    Rain ran_all_along(3);
+    for (int i = 0; i < 100; ++i) ran_all_along.step();
+    ASSERT_GT(ran_all_along.live.count, 0);
+    ASSERT_TRUE(ran_all_along.params.set(ParamId::rain_seed, 9, ParamSource::CommandLine));
+    ASSERT_TRUE(ran_all_along.params.set(ParamId::rain_intensity, 0.7f, ParamSource::CommandLine));
+    Rain starts_now(9);
+    ASSERT_TRUE(starts_now.params.set(ParamId::rain_intensity, 0.7f, ParamSource::CommandLine));
+    starts_now.clock.step_index = ran_all_along.clock.step_index;
+    for (int i = 0; i < 30; ++i) {
+        ran_all_along.step();
+        starts_now.step();
+        ASSERT_EQ(ran_all_along.drops(), starts_now.drops()) << "step " << ran_all_along.clock.step_index;
+        ASSERT_EQ(ran_all_along.live.count, starts_now.live.count);
+        for (int d = 0; d < starts_now.live.count; ++d)
+            ASSERT_EQ(ran_all_along.live.drops[static_cast<std::size_t>(d)],
+                      starts_now.live.drops[static_cast<std::size_t>(d)]);
+    }
+}
+
 }  // namespace
 }  // namespace puddle::systems

@@ -28,7 +28,8 @@ inline void step(app::Engine& e, std::initializer_list<glm::vec3> drops = {}) {
     systems::LiveDrops live;
     for (const glm::vec3& d : drops) live.drops[std::size_t(live.count++)] = glm::vec4(d, 0.0f);
     e.make_current();
-    systems::wave_system(e.device(), e.params(), live, e.world().resource<systems::WaveField>());
+    systems::wave_system(e.device(), e.params(), e.world().resource<systems::FrameClock>(), live,
+                         e.world().resource<systems::WaveField>());
 }
 
 // The discrete energy the leapfrog scheme conserves at damping 1 (k = 1/2):

@@ -1,0 +1,93 @@
+#include "systems/wall_steps.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace puddle::systems {
+
+using params::ParamId;
+
+namespace {
+
+// Starts the field flat `warmup` steps before `target`: the next frames simulate up to it.
+void restart(FrameClock& clock, WallSteps& steps, std::int64_t target, std::int64_t warmup) {
+    clock.step_index = static_cast<std::uint64_t>(target - warmup);
+    ++clock.field_generation;
+    ++steps.resyncs;
+}
+
+// Why a re-sync is due, or null: the caller logs it with the clock's gap.
+const char* resync_reason(const WallSteps& steps, bool field_needed, std::int64_t behind, std::int64_t warmup,
+                          std::int64_t max_hold) {
+    if (!steps.joined) return "joining the wall clock";
+    if (field_needed && !steps.field_in_use) return "the wave field is in use again";
+    if (behind > warmup) return "the clock is ahead of the picture";
+    if (behind < -max_hold) return "the clock went back";
+    return nullptr;
+}
+
+}  // namespace
+
+void wall_steps_system(const WallClock& wall, const OutputPower& power, const ShownLook& look,
+                       const params::Params& params, WallSteps& steps, FrameClock& clock) {
+    clock.steps_due = 0;
+    if (!power.on) return;  // nothing is simulated while off; waking is a forward step (see the header)
+    if (!steps.sync_checked) {
+        steps.sync_checked = true;
+        if (const ClockSync sync = wall.sync(); !sync.synchronised)
+            spdlog::warn(
+                "wall: the system clock is {}: screens of a wall will drift apart (README \"Video walls\")",
+                describe(sync));
+    }
+    const double rate = params.get<ParamId::wave_steps_per_second>();
+    const double step_seconds = 1.0 / rate;
+    if (steps.joined && step_seconds != clock.step_seconds) {
+        // The same step index on every screen maps to the same new one, so a synced change of the rate
+        // keeps the wall in step without a re-sync.
+        clock.step_index = static_cast<std::uint64_t>(
+            std::floor(static_cast<double>(clock.step_index) * clock.step_seconds * rate));
+    }
+    // Step n is at n / rate seconds since the Unix epoch: sim_time is a function of the step alone.
+    clock.step_seconds = step_seconds;
+    clock.epoch_time = 0.0;
+    clock.epoch_step = 0;
+    clock.accumulator = 0.0;
+
+    const auto latency = std::llround(static_cast<double>(params.get<ParamId::wall_latency>()) * 1e9);
+    const std::int64_t target = step_at(wall.now_ns() + latency, rate);
+    steps.target_step = target;
+    const bool field_needed = look.scene == Scene::puddle && look.drops == DropModel::pulse;
+    // Looks without the wave field are functions of the step alone: they jump straight to it.
+    const std::int64_t warmup =
+        field_needed ? std::llround(static_cast<double>(params.get<ParamId::wall_warmup>()) * rate) : 0;
+    const std::int64_t max_hold = std::llround(max_hold_seconds * rate);
+    std::int64_t behind = target - static_cast<std::int64_t>(clock.step_index);
+    if (const char* why = resync_reason(steps, field_needed, behind, warmup, max_hold)) {
+        if (steps.joined)
+            spdlog::info("wall: {} ({:+.3f} s): re-syncing, {} steps of warm-up", why,
+                         static_cast<double>(behind) * step_seconds, warmup);
+        else
+            spdlog::info("wall: {} at step {} ({} steps/s), {} steps of warm-up", why, target, rate, warmup);
+        restart(clock, steps, target, warmup);
+        behind = warmup;
+    }
+    steps.joined = true;
+    steps.field_in_use = field_needed;
+    std::int64_t due = std::clamp<std::int64_t>(behind, 0, params.get<ParamId::wall_catch_up_steps>());
+    if (steps.change_step != 0)  // the change's step waits for the change (systems/synced_changes.hpp)
+        due = std::clamp<std::int64_t>(
+            static_cast<std::int64_t>(steps.change_step) - 1 - static_cast<std::int64_t>(clock.step_index), 0,
+            due);
+    clock.steps_due = static_cast<int>(due);
+}
+
+ecs::RunCondition wall_clock_is(params::WallClockMode mode) {
+    return {"wall.clock is " + std::string(params::choice_name(mode)), [mode](ecs::World& w) {
+                return w.resource<params::Params>().get<ParamId::wall_clock>() == mode;
+            }};
+}
+
+}  // namespace puddle::systems

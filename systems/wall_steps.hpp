@@ -1,0 +1,55 @@
+#pragma once
+// Time from the wall clock (wall.clock = "realtime", issue 20): the step a frame simulates up to is the
+// one its vblank falls in, step_at(now + wall.latency) (systems/wall_clock.hpp), so screens whose clocks
+// agree show the same step, and the simulation stays a pure function of seed, parameters and step.
+//
+// The wave field carries history, so a screen that has none (start-up, the field coming back into use,
+// or a gap it cannot simply catch up) joins by a warm-up: the field starts flat wall.warmup seconds
+// before the clock's step and is simulated forward at most wall.catch_up_steps steps a frame until it
+// reaches it. What it still differs from a screen that ran all along is what is left of the start:
+// damping^(n/2) (warmup_residual). Frames keep being presented during a warm-up (the picture
+// fast-forwards for warmup x steps_per_second / (catch_up_steps - 1) frames: 21 with the defaults), so
+// the watchdog is pinged every frame.
+//
+// Clock steps: forward by up to the warm-up, the missed steps are caught up, catch_up_steps a frame, and
+// the field is exactly that of a screen that never stopped; further forward, a re-sync as above. Back by
+// up to a quarter second the screen holds its step until the clock is there again (it already simulated
+// those steps); further back, a re-sync. While the output is off nothing is simulated, and waking counts
+// as a forward step by the time it was off.
+
+#include <cstdint>
+
+#include "ecs/schedule.hpp"
+#include "params/param_store.hpp"
+#include "systems/frame_clock.hpp"
+#include "systems/output_power.hpp"
+#include "systems/scene_select.hpp"
+#include "systems/wall_clock.hpp"
+
+namespace puddle::systems {
+
+// A backward clock step this long or shorter is waited out rather than re-synced.
+inline constexpr double max_hold_seconds = 0.25;
+
+// Resource.
+struct WallSteps {
+    bool joined = false;           // step_index follows the wall clock; false: the next frame joins
+    bool field_in_use = false;     // the wave field was simulated last frame (the look needs it)
+    std::int64_t target_step = 0;  // the step this frame's vblank falls in
+    std::uint64_t resyncs = 0;     // warm-ups begun, joining at start-up included
+    // Nonzero: a synced change (systems/synced_changes.hpp) applies at this step, so no frame simulates
+    // it or a later one before the change is in Params.
+    std::uint64_t change_step = 0;
+    bool sync_checked = false;  // the kernel's clock discipline was looked at (warned once if unsynchronised)
+};
+
+// Input stage, with wall.clock = "realtime": sets the frame clock's steps_due (and, on a join or re-sync,
+// its step index and field generation) from the wall clock. Logs one line per re-sync, and warns once
+// when the kernel does not consider the clock synchronised (read_clock_sync).
+void wall_steps_system(const WallClock& wall, const OutputPower& power, const ShownLook& look,
+                       const params::Params& params, WallSteps& steps, FrameClock& clock);
+
+// "wall.clock is realtime" / "wall.clock is frame".
+ecs::RunCondition wall_clock_is(params::WallClockMode mode);
+
+}  // namespace puddle::systems

@@ -1,0 +1,116 @@
+// Tests for systems/synced_changes.hpp: with the realtime clock, a config edit that two screens of a wall
+// read at different moments is applied by both at the same step, the step of the next change boundary.
+#include "systems/synced_changes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+
+#include "support/test_support.hpp"
+
+namespace puddle::systems {
+namespace {
+
+using params::ParamId;
+
+constexpr std::int64_t start_ns = 1'764'590'400LL * ns_per_second + 400'000'000;  // 12:00:00.4 UTC
+constexpr std::int64_t frame_ns = 16'666'667;
+
+const char* const config_before = "[wall]\nclock = \"realtime\"\n[rain]\nintensity = 0.3\n";
+const char* const config_after = "[wall]\nclock = \"realtime\"\n[rain]\nintensity = 0.8\n";
+
+// One screen of a wall: its own config file, live tuning, and the frame's input and simulate stages.
+struct Screen {
+    explicit Screen(std::int64_t phase_ns) : now(start_ns + phase_ns) {
+        config_path = dir.write("puddle.toml", config_before);
+        tuning.emplace(params::ParamLayers(params::Presets::load({}), {}));
+        tuning->config_path = config_path;
+        auto config = params::load_config_file(config_path);
+        EXPECT_TRUE(config) << config.error().message;
+        EXPECT_TRUE(tuning->layers.set_config(std::move(*config)));
+        params = tuning->layers.compose();
+        start_live_tuning(*tuning);
+        wall.now_ns = [this] { return now; };
+    }
+    // One frame: the input stage's systems in the binary's order, then the due steps, each noting the
+    // intensity it simulated with.
+    void frame() {
+        live_tuning_step(*tuning, params, static_cast<double>(now) * 1e-9);
+        synced_changes_system(wall, clock, power, *tuning, params, steps);
+        wall_steps_system(wall, power, look, params, steps, clock);
+        for (int i = 0; i < clock.steps_due; ++i) {
+            begin_step_system(clock);
+            if (!first_new_step && params.get<ParamId::rain_intensity>() == 0.8f)
+                first_new_step = clock.step_index;
+        }
+        now += frame_ns;
+    }
+    void edit_config() {
+        const std::string temp = dir.write("puddle.toml.new", config_after);
+        std::filesystem::rename(temp, config_path);  // as an editor or a deploy tool saves
+    }
+
+    test::TempDir dir;
+    std::string config_path;
+    std::optional<LiveTuning> tuning;
+    params::Params params;
+    std::int64_t now;
+    WallClock wall;
+    OutputPower power;
+    ShownLook look;
+    WallSteps steps;
+    FrameClock clock;
+    std::optional<std::uint64_t> first_new_step;
+};
+
+TEST(SyncedChanges, AConfigEditReadAtDifferentMomentsAppliesAtTheSameStep) {
+    Screen a(0), b(7'000'000);                          // b's frames start 7 ms into a's
+    for (int i = 0; i < 30; ++i) a.frame(), b.frame();  // both joined and in step
+    ASSERT_EQ(a.params.get<ParamId::wall_clock>(), params::WallClockMode::realtime);
+    a.edit_config();
+    const std::int64_t read_at = a.now;
+    for (int i = 0; i < 3; ++i) a.frame(), b.frame();  // the edit reaches b's copy 50 ms later
+    b.edit_config();
+    for (int i = 0; i < 240; ++i) a.frame(), b.frame();
+    ASSERT_TRUE(a.first_new_step && b.first_new_step);
+    EXPECT_EQ(*a.first_new_step, *b.first_new_step);
+    // The step of the next whole second after the read, plus one second.
+    EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(read_at, 1.0), 60.0));
+    EXPECT_EQ(a.steps.change_step, 0u);
+    EXPECT_FALSE(a.tuning->layers_changed);
+}
+
+// While the output is off nothing is simulated, yet a pending change still applies at its time. Held for a
+// step that never came, it never applied: a reload setting display.power = true left the screen dark.
+TEST(SyncedChanges, AChangeWhileTheOutputIsOffAppliesAtItsTime) {
+    Screen a(0);
+    for (int i = 0; i < 30; ++i) a.frame();
+    a.power.on = false;
+    a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
+    a.tuning->layers_changed = true;
+    a.tuning->change_reason = "remote";
+    const std::int64_t at = a.now + 300'000'000;
+    a.tuning->apply_at_ns = at;
+    for (int i = 0; i < 30; ++i) a.frame();
+    EXPECT_EQ(a.params.get<ParamId::rain_intensity>(), 0.8f);
+    EXPECT_FALSE(a.tuning->layers_changed);
+    EXPECT_GE(a.now, at);
+}
+
+// A remote message's apply_at is the step, wherever in the period it was read.
+TEST(SyncedChanges, ARemoteApplyAtIsTheStep) {
+    Screen a(0);
+    for (int i = 0; i < 30; ++i) a.frame();
+    const std::int64_t at = a.now + 500'000'000;
+    a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
+    a.tuning->layers_changed = true;
+    a.tuning->change_reason = "remote";
+    a.tuning->apply_at_ns = at;
+    for (int i = 0; i < 60; ++i) a.frame();
+    ASSERT_TRUE(a.first_new_step);
+    EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(at, 60.0));
+}
+
+}  // namespace
+}  // namespace puddle::systems
