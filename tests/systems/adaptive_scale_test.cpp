@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "support/gpu_fixture.hpp"
+#include "support/test_support.hpp"
 #include "systems/output_canvas.hpp"
 
 namespace puddle::test {
