@@ -98,11 +98,11 @@ TEST(ScaleController, ComesBackToFullScaleWithin30SecondsWhenTheLoadGoes) {
 
 TEST(ScaleController, NeverGoesBelowMinScale) {
     ScaleTuning t = tuning_60();
-    t.min_scale = 0.6f;
+    t.min_scale = 0.62;  // off the 0.05 grid of the steps: the last step down stops at it
     Sim sim{ScaleController(t)};
     const RunResult r = sim.run({.fixed_s = 0.002, .per_pixel_s = 0.2}, 120.0);  // 200 ms: no scale fits
-    EXPECT_EQ(sim.controller.scale(), 0.6f);
-    EXPECT_EQ(r.lowest, 0.6f);
+    EXPECT_EQ(sim.controller.scale(), 0.62f);
+    EXPECT_EQ(r.lowest, 0.62f);
     EXPECT_EQ(r.settled, 1);  // settles at the floor, said once
 }
 
