@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <utility>
+
 namespace puddle::systems {
 
 namespace {
@@ -28,14 +30,13 @@ struct CanvasLayout {
     bool needed() const { return degrees != 0 || scaled || brightness < 1; }
 };
 
-CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size) {
+CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size, float scale) {
     CanvasLayout l;
     // wall.rotation turns a screen of a video wall the same way (the README's portrait walls).
     const int quarter_turns = static_cast<int>(params.get<params::ParamId::display_rotation>()) +
                               params.get<params::ParamId::wall_rotation>();
     l.degrees = 90 * (quarter_turns % 4);
     const glm::ivec2 turned = l.degrees % 180 ? glm::ivec2(display_size.y, display_size.x) : display_size;
-    const float scale = params.get<params::ParamId::render_scale>();
     l.size = glm::max(glm::ivec2(glm::round(glm::vec2(turned) * scale)), glm::ivec2(1));
     l.scaled = l.size != turned;
     l.brightness = params.get<params::ParamId::display_brightness>();
@@ -46,16 +47,16 @@ CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size
 
 Result<void> prepare_output_canvas(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
                                    glm::ivec2 display_size) {
-    const CanvasLayout l = canvas_layout(params, display_size);
+    const CanvasLayout l = canvas_layout(params, display_size, params.get<params::ParamId::render_scale>());
     if (!l.needed()) return {};
     const CanvasPass pass = canvas_pass(l.scaled);
     return canvas.pipelines.ensure(device, pass, [&] { return canvas_desc(pass); });
 }
 
 gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& r,
-                                    gpu::FrameTarget display) {
+                                    gpu::FrameTarget display, float scale) {
     r.display = display;
-    const CanvasLayout l = canvas_layout(params, display.size);
+    const CanvasLayout l = canvas_layout(params, display.size, scale);
     const int degrees = l.degrees;
     const glm::ivec2 size = l.size;
     r.quarter_turns = degrees / 90;
@@ -78,10 +79,15 @@ gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& p
         if (canvas) {
             r.canvas = std::move(canvas).value();
             r.canvas_size = size;
-            spdlog::info("display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}{}",
-                         display.size.x, display.size.y, degrees, size.x, size.y,
-                         r.scaled ? " and is scaled up" : "",
-                         r.brightness < 1 ? "; dimmed in the last pass" : "");
+            // The adaptive scale resizes the canvas every few seconds while it looks for its scale and says
+            // where it settled itself; a new screen size or turn is worth the info line.
+            const bool new_layout = std::exchange(r.logged_layout, glm::ivec3(display.size, degrees)) !=
+                                    glm::ivec3(display.size, degrees);
+            spdlog::log(new_layout ? spdlog::level::info : spdlog::level::debug,
+                        "display: {}x{}, turned {} degrees clockwise; the picture renders at {}x{}{}{}",
+                        display.size.x, display.size.y, degrees, size.x, size.y,
+                        r.scaled ? " and is scaled up" : "",
+                        r.brightness < 1 ? "; dimmed in the last pass" : "");
         } else {
             // The old canvas has the wrong size for this frame: the scene renders straight to the display.
             spdlog::error("{} (showing the picture unturned, at full size)", canvas.error().message);

@@ -3,11 +3,13 @@
 // - display.rotation (0, 90, 180, 270, clockwise as seen on the screen), plus wall.rotation's quarter
 //   turns, done in GL: the scene renders upright into a canvas the size of the turned screen, and a last
 //   pass turns it onto the display;
-// - render.scale below 1: the canvas is that fraction of the screen, and the last pass scales it up
+// - render.scale below 1 (or the adaptive scale's, systems/adaptive_scale.hpp): the canvas is that fraction of the screen, and the last pass scales it up
 //   with bilinear filtering;
 // - display.brightness below 1: the last pass multiplies every colour channel by it, once, on the
 //   display-encoded values (0.5 halves each 8-bit value: about a fifth of the light on an sRGB screen).
 // With none of them, the scene renders straight to the display and this costs nothing.
+
+#include <glm/vec3.hpp>
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -35,6 +37,7 @@ struct OutputCanvas {
     gpu::FrameTarget display;  // this frame's display target
     // A canvas the GPU could not make: said once, unturned until the size changes.
     glm::ivec2 failed_size{0, 0};
+    glm::ivec3 logged_layout{0, 0, -1};  // display size and turn of the last info line
 };
 
 // Start-up: builds the shader the configured rotation and scale need on a screen of `display_size`, so the
@@ -42,10 +45,11 @@ struct OutputCanvas {
 Result<void> prepare_output_canvas(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
                                    glm::ivec2 display_size);
 // Called before each frame: remembers the display target and returns where the scene should render
-// (the display, or the canvas, made or resized as the rotation, the scale and the display size need).
+// (the display, or the canvas, made or resized as the rotation, `scale` (render.scale, or the adaptive
+// scale's) and the display size need).
 // The canvas's shader is built off the frame thread; until it is ready the scene renders to the display.
 gpu::FrameTarget begin_canvas_frame(gpu::Device& device, const params::Params& params, OutputCanvas& canvas,
-                                    gpu::FrameTarget display);
+                                    gpu::FrameTarget display, float scale);
 // Present stage, before the frame is shown: turns and scales the canvas onto the display (nothing
 // when the scene rendered to the display).
 void output_canvas_system(gpu::Device& device, const OutputCanvas& canvas);

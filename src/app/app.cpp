@@ -151,12 +151,13 @@ std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signal
 namespace {
 
 // One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
-void log_stats(const FrameStats::Summary& s) {
+void log_stats(const FrameStats::Summary& s, const systems::AdaptiveScale& adaptive) {
     const MemoryStatus m = read_memory_status();
     spdlog::info(
         "stats: {:.1f} fps over {} frames; frame ms p50 {:.2f} p95 {:.2f} p99 {:.2f} max {:.2f}; "
-        "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB",
-        s.fps, s.frames, s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms, s.cpu_ms, s.main_cpu_ms, m.rss_kib / 1024.0);
+        "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB; render scale {:.2f}{}",
+        s.fps, s.frames, s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms, s.cpu_ms, s.main_cpu_ms, m.rss_kib / 1024.0,
+        adaptive.scale, adaptive.controller ? " (adaptive)" : "");
 }
 
 }  // namespace
@@ -236,7 +237,8 @@ int run(int argc, const char* const* argv) {
     for (long n = 0; frames == 0 || n < frames; ++n) {
         if (o.stats_every > 0) {
             stats.tick();
-            if (const auto s = stats.take_report()) log_stats(*s);
+            if (const auto s = stats.take_report())
+                log_stats(*s, e.world().resource<systems::AdaptiveScale>());
         }
         if (stop.requested() || !e.display().poll_events()) {
             spdlog::info("stopping ({})",
@@ -259,7 +261,8 @@ int run(int argc, const char* const* argv) {
     }
     e.shutdown();  // STOPPING=1 to systemd, knob changes not yet saved
     if (o.stats_every > 0) {
-        if (const auto s = stats.summary(); s.frames > 0) log_stats(s);
+        if (const auto s = stats.summary(); s.frames > 0)
+            log_stats(s, e.world().resource<systems::AdaptiveScale>());
         const MemoryStatus m = read_memory_status();
         spdlog::info(
             "stats: peak resident memory {:.1f} MB (VmHWM), {:.1f} MB now (VmRSS: {:.1f} MB anonymous, "

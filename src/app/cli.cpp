@@ -86,8 +86,9 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         "--camera", o.camera,
         "Reflect a camera: a V4L2 device (/dev/video0) or mock:PATH (an image or a folder of images)");
     cli.add_option("--stats", o.stats_every,
-                   "Log fps, frame-time percentiles (p50/p95/p99), CPU time per frame and resident memory "
-                   "every SECONDS (default 5)")
+                   "Log fps, frame-time percentiles (p50/p95/p99), CPU time per frame, resident memory "
+                   "and the render scale (render.scale, or the adaptive scale's: render.target_fps) every "
+                   "SECONDS (default 5)")
         ->expected(0, 1)
         ->default_str("5")
         ->check(CLI::Range(0.1, 3600.0));

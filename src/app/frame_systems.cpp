@@ -11,10 +11,11 @@
 namespace puddle::app {
 
 void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
-                        systems::OutputCanvas& canvas, systems::RenderTarget& target) {
+                        const systems::AdaptiveScale& adaptive, systems::OutputCanvas& canvas,
+                        systems::RenderTarget& target) {
     display.make_current();  // another engine, or a test, may have made its own current since
     const gpu::FrameTarget screen = display.frame_target();
-    target.target = systems::begin_canvas_frame(device, params, canvas, screen);
+    target.target = systems::begin_canvas_frame(device, params, canvas, screen, adaptive.scale);
     // The wall's bezels are in the screen's pixels, and its tiles are upright: the screen turned as the
     // picture is (not at all when the canvas could not be made), whatever render.scale is.
     const glm::ivec2 upright =
@@ -58,6 +59,9 @@ void present_system(platform::Display& display, systems::OutputPower& power, Pre
 Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule) {
     world.insert_resource<ecs::FrameTime>();
     world.insert_resource<systems::RenderTarget>();
+    auto& adaptive = world.insert_resource<systems::AdaptiveScale>();
+    adaptive.display_refresh_hz = world.resource<platform::Display>().refresh_hz();
+    adaptive.scale = world.resource<params::Params>().get<params::ParamId::render_scale>();
     auto& canvas = world.insert_resource<systems::OutputCanvas>();
     if (auto r =
             systems::prepare_output_canvas(world.resource<gpu::Device>(), world.resource<params::Params>(),
@@ -69,7 +73,11 @@ Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule) {
     world.insert_resource<PresentStatus>();
     using ecs::Stage;
     schedule.add(Stage::Input, "begin frame", begin_frame_system);
+    schedule.add(Stage::Input, "gpu timer begin", systems::gpu_timer_begin_system)
+        .run_if(systems::output_on());
     schedule.add(Stage::Present, "output canvas", systems::output_canvas_system).run_if(systems::output_on());
+    schedule.add(Stage::Present, "adaptive scale", systems::adaptive_scale_system)
+        .run_if(systems::output_on());
     schedule.add(Stage::Present, "capture", capture_system);
     schedule.add(Stage::Present, "present", present_system);
     return {};

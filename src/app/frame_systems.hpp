@@ -3,7 +3,9 @@
 //   input:   begin frame   makes the display's context current and picks where the scene renders
 //                          (the display, or the output canvas when it is turned or scaled) and which
 //                          window of the whole view it shows (a video wall's tile, render/view_window.hpp)
+//            gpu timer begin  starts timing the frame on the GPU while the adaptive scale is on
 //   present: output canvas turns and scales the canvas onto the display
+//            adaptive scale   ends the timing and sets the next frame's scale (systems/adaptive_scale.hpp)
 //            capture       reads the frame back when asked (screenshots, tests)
 //            present       shows it (swap, page flip, or the headless fence); nothing while the output is off
 // add_display_plugin registers them; the engine installs it before any feature, so the frame is one run
@@ -15,6 +17,7 @@
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
 #include "platform/display.hpp"
+#include "systems/adaptive_scale.hpp"
 #include "systems/output_canvas.hpp"
 #include "systems/output_power.hpp"
 #include "systems/render_system.hpp"
@@ -34,7 +37,8 @@ struct PresentStatus {
 };
 
 void begin_frame_system(platform::Display& display, gpu::Device& device, const params::Params& params,
-                        systems::OutputCanvas& canvas, systems::RenderTarget& target);
+                        const systems::AdaptiveScale& adaptive, systems::OutputCanvas& canvas,
+                        systems::RenderTarget& target);
 void capture_system(platform::Display& display, gpu::Device& device, FrameCapture& capture);
 // While the output is off nothing is presented (but the one black frame of going off), and the status
 // stays good, so the watchdog is still pinged.
@@ -44,8 +48,8 @@ void present_system(platform::Display& display, systems::OutputPower& power, Pre
 assets::Image read_display(platform::Display& display, gpu::Device& device);
 
 // Needs platform::Display, gpu::Device and params::Params in the world; inserts RenderTarget,
-// OutputCanvas, systems::OutputPower, ecs::FrameTime, FrameCapture and PresentStatus and registers the
-// systems above.
+// systems::AdaptiveScale, OutputCanvas, systems::OutputPower, ecs::FrameTime, FrameCapture and PresentStatus
+// and registers the systems above.
 Result<void> add_display_plugin(ecs::World& world, ecs::Schedule& schedule);
 
 }  // namespace puddle::app

@@ -12,6 +12,10 @@
 // The summary table goes to stdout after the runs; with --benchmark_format=json prefer
 // --benchmark_out=FILE so the table does not mix with the JSON.
 //
+// Every figure is taken on water in its steady state (bench/steady_state.hpp: rain runs until the field's
+// RMS slope stops growing, a few hundred steps); frame_calm_start/ is the same frame one second after a
+// calm start, a labelled extra.
+//
 // After the table: the render shader's estimated per-pixel cost (texture fetches and ALU operations,
 // bench/shader_cost.hpp) for both methods, then a check against the stored baseline
 // (src/bench/bench_baseline.json): ratios to the floor and the shader cost, never milliseconds. A figure
@@ -50,6 +54,7 @@ void register_all() {
                 benchmark::DoNotOptimize(assets::night_sky_cubemap(assets::procedural_sky_face_size, 1));
         });
     register_look_benchmarks();
+    register_calm_start_benchmarks();
 }
 
 }  // namespace puddle::bench

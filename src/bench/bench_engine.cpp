@@ -13,6 +13,7 @@ namespace {
 
 std::unique_ptr<Bench> current;  // one at a time: each engine owns an EGL context that it makes current
 std::string renderer_text = "(no engine was made)";
+std::vector<std::pair<glm::ivec2, Warmup>> warmups_done;
 
 }  // namespace
 
@@ -26,7 +27,7 @@ const std::string& renderer() {
 
 namespace {
 
-Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
+Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size, Start start) {
     platform::DisplayOptions display;
     display.backend = platform::BackendKind::Headless;
     display.size = size;
@@ -34,6 +35,7 @@ Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
     if (!engine) return engine.error();
     auto b = std::make_unique<Bench>();
     b->size = size;
+    b->start = start;
     b->engine = std::move(engine).value();
     gpu::Device& device = b->engine->device();
     renderer_text = fmt::format("{} ({})", device.caps().renderer, device.caps().version);
@@ -52,24 +54,34 @@ Result<std::unique_ptr<Bench>> make_bench(glm::ivec2 size) {
     b->sampler = device.create_sampler({.label = "bench source"});
 
     // One frame of a whole second (16 steps, the per-frame cap) so the surface has ripples on it and the
-    // render target resource is set; the passes below then measure a settled, rainy puddle.
+    // render target resource is set; then the rain runs until the water is as rough as it gets, and one
+    // more frame renders that surface.
     if (auto r = b->engine->frame(1.0); !r) return r.error();
+    if (start == Start::steady) {
+        b->warmup = warm_to_steady_state(*b->engine);
+        warmups_done.emplace_back(size, b->warmup);
+        if (auto r = b->engine->frame(1.0 / 60.0); !r) return r.error();
+    }
     return b;
 }
 
 }  // namespace
 
-Bench* bench_for(glm::ivec2 size, benchmark::State& state) {
-    if (current && current->size == size) return current.get();
+Bench* bench_for(glm::ivec2 size, benchmark::State& state, Start start) {
+    if (current && current->size == size && current->start == start) return current.get();
     release_camera_bench();
     current.reset();
-    auto b = make_bench(size);
+    auto b = make_bench(size, start);
     if (!b) {
         state.SkipWithError(b.error().message.c_str());
         return nullptr;
     }
     current = std::move(b).value();
     return current.get();
+}
+
+const std::vector<std::pair<glm::ivec2, Warmup>>& warmups() {
+    return warmups_done;
 }
 
 Bench* current_bench() {

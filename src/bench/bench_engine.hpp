@@ -10,8 +10,11 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/engine.hpp"
+#include "bench/steady_state.hpp"
 
 namespace puddle::bench {
 
@@ -19,9 +22,15 @@ inline constexpr std::array<glm::ivec2, 2> sizes{glm::ivec2{1280, 720}, glm::ive
 inline constexpr std::array<params::RenderMethod, 2> methods{params::RenderMethod::intersect,
                                                              params::RenderMethod::raymarch};
 
+// Where the water is when timing starts: the steady state a wall shows all day (bench/steady_state.hpp),
+// or a calm start (one second of rain), the figure kept as a labelled extra.
+enum class Start { steady, calm };
+
 // The engine for one frame size plus the floor pass's own objects.
 struct Bench {
     glm::ivec2 size{};
+    Start start = Start::steady;
+    Warmup warmup;  // the steps that warmed it (none for a calm start)
     std::unique_ptr<app::Engine> engine;
     gpu::Pipeline floor;
     gpu::Texture source;
@@ -32,10 +41,12 @@ std::string size_name(glm::ivec2 s);
 // "llvmpipe (LLVM 15.0.6, 256 bits) (OpenGL ES 3.2 Mesa 22.3.6)", once an engine was made.
 const std::string& renderer();
 
-// The engine of `size`, made on first use (a rainy second already run). Benchmarks are registered size by
-// size, so each size is built once; the old engine goes first. Null, with the benchmark skipped and the
-// reason given, when it cannot be made.
-Bench* bench_for(glm::ivec2 size, benchmark::State& state);
+// The engine of `size`, made on first use: a rainy second already run, then (Start::steady) warmed to the
+// steady state. Benchmarks are registered size by size, so each size is built once; the old engine goes
+// first. Null, with the benchmark skipped and the reason given, when it cannot be made.
+Bench* bench_for(glm::ivec2 size, benchmark::State& state, Start start = Start::steady);
+// The warm-ups done so far, by size, for the summary.
+const std::vector<std::pair<glm::ivec2, Warmup>>& warmups();
 // The engine made last, or null.
 Bench* current_bench();
 // Releases the engine and everything made in its context (call before exit, ahead of driver teardown).

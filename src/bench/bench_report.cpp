@@ -69,7 +69,16 @@ void print_summary(const Collector& c) {
                 "%s", (rm && in ? fmt::format("{:>19.2f}x", *rm / *in) : fmt::format("{:>20}", "-")).c_str());
         }
     }
-    std::printf("\n");
+    std::printf("\n%-20s", "frame, calm start");
+    for (glm::ivec2 s : sizes)  // x the steady-state frame
+        std::printf("%s", cell(c.ms("frame_calm_start/intersect/" + size_name(s)),
+                               c.ms("frame/intersect/" + size_name(s)))
+                              .c_str());
+    std::printf("\n\nWater: timed in its steady state (the calm-start row: x the steady frame)\n");
+    for (const auto& [size, w] : warmups())
+        std::printf("  %-10s %4d steps of rain, RMS slope %.5f per texel (calm start %.5f)%s\n",
+                    size_name(size).c_str(), w.steps, w.steady_slope, w.calm_slope,
+                    w.steady ? "" : "; still growing at the limit");
     print_look_summary(c);
     print_camera_summary(c);
 }

@@ -68,8 +68,9 @@ void bench_render(benchmark::State& state, glm::ivec2 size, params::RenderMethod
 }
 
 // A whole frame at 60 Hz: exactly one wave step (at the default 60 steps/s), surface, render, present.
-void bench_frame(benchmark::State& state, glm::ivec2 size, params::RenderMethod method) {
-    Bench* b = bench_for(size, state);
+void bench_frame(benchmark::State& state, glm::ivec2 size, params::RenderMethod method,
+                 Start start = Start::steady) {
+    Bench* b = bench_for(size, state, start);
     if (!b) return;
     set_method(b->engine->params(), method);
     std::string error;
@@ -96,6 +97,12 @@ void register_pass_benchmarks() {
             add_benchmark(fmt::format("frame/{}/{}", params::choice_name(m), n),
                           [s, m](benchmark::State& st) { bench_frame(st, s, m); });
     }
+}
+
+void register_calm_start_benchmarks() {
+    for (glm::ivec2 s : sizes)
+        add_benchmark(fmt::format("frame_calm_start/{}/{}", params::choice_name(methods[0]), size_name(s)),
+                      [s](benchmark::State& st) { bench_frame(st, s, methods[0], Start::calm); });
 }
 
 }  // namespace puddle::bench

@@ -14,6 +14,7 @@
 #include "gpu/capabilities.hpp"
 #include "gpu/external_image.hpp"
 #include "gpu/frame_target.hpp"
+#include "gpu/gpu_timer.hpp"
 #include "gpu/handle.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/pipeline_compiler.hpp"
@@ -75,6 +76,8 @@ public:
     // empty. Nothing while the worker is still on it.
     std::optional<Result<Pipeline>> take_pipeline(PipelineRequest& request);
     RenderPass begin_pass(const RenderPassDesc& desc);
+    // Times frames on the GPU (gpu/gpu_timer.hpp); one that measures nothing without timer queries.
+    GpuTimer create_gpu_timer();
     // An EGLImage (from a dmabuf or a GL texture) as an External texture (external_image.cpp).
     Result<ExternalImage> create_external_image(const ExternalImageDesc& desc);
     // What create_external_image can import with this context and its EGL display.

@@ -45,6 +45,9 @@ public:
     virtual void make_current() = 0;
     virtual BackendKind kind() const = 0;
     virtual glm::ivec2 size() const = 0;
+    // Frames per second the display shows, the default target of the adaptive scale (render.target_fps
+    // -1): kms the mode's refresh, a window 60 (X11 does not say without XRandR), headless 0 (none).
+    virtual double refresh_hz() const { return 0; }
     // Where the render system draws this frame: an offscreen texture (headless) or framebuffer 0.
     virtual gpu::FrameTarget frame_target() const = 0;
     // Handles window-system or input events; false once the user asked to close the display.

@@ -255,6 +255,7 @@ public:
 
     BackendKind kind() const override { return BackendKind::Kms; }
     glm::ivec2 size() const override { return {mode_.hdisplay, mode_.vdisplay}; }
+    double refresh_hz() const override { return mode_.vrefresh; }
     gpu::FrameTarget frame_target() const override { return {nullptr, size()}; }
     bool poll_events() override { return true; }  // no window system; signals are handled by the app
     Result<void> present() override;

@@ -78,6 +78,7 @@ public:
 
     BackendKind kind() const override { return BackendKind::Window; }
     glm::ivec2 size() const override { return size_; }
+    double refresh_hz() const override { return 60; }
     gpu::FrameTarget frame_target() const override { return {nullptr, size_}; }
     bool poll_events() override;
     Result<void> present() override;

@@ -174,6 +174,22 @@ TEST(EndToEnd, StatsLogsFpsPercentilesCpuAndPeakMemory) {
     EXPECT_GT(megabytes_after(r.output, "peak resident memory "), 1.0) << r.output;
 }
 
+TEST(EndToEnd, StatsShowTheRenderScaleAndWhetherItIsAdaptive) {
+    const CommandResult fixed =
+        run_puddle("-b headless --size 160x90 --frames 60 --stats 0.2 --set render.scale=0.75");
+    ASSERT_EQ(fixed.exit_code, 0) << fixed.output;
+    EXPECT_NE(fixed.output.find("; render scale 0.75\n"), std::string::npos) << fixed.output;
+    EXPECT_EQ(fixed.output.find("adaptive"), std::string::npos) << "headless: off by default\n"
+                                                                << fixed.output;
+    const CommandResult adaptive =
+        run_puddle("-b headless --size 160x90 --frames 60 --stats 0.2 --set render.target_fps=30");
+    ASSERT_EQ(adaptive.exit_code, 0) << adaptive.output;
+    EXPECT_NE(adaptive.output.find("render: adaptive scale on: 30 fps, scale 0.50 to 1.00"),
+              std::string::npos)
+        << adaptive.output;
+    EXPECT_NE(adaptive.output.find(" (adaptive)\n"), std::string::npos) << adaptive.output;
+}
+
 // Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (README "Memory"), on Debian 12
 // with llvmpipe: about 110 MB peak, of which Mesa alone (an EGL context drawing one 1080p pass) is about
 // 90 MB: libLLVM and the driver about 61 MB of pages, LLVM's heap and the frame itself the rest. What

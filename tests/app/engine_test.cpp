@@ -26,7 +26,8 @@ platform::DisplayOptions headless(glm::ivec2 size = {64, 36}) {
 // of order, of a run condition or of what a system reads and writes shows here first; update it on purpose.
 std::vector<std::string> binary_schedule() {
     std::vector<std::string> lines = {
-        "input/begin frame (reads Params; writes Display, Device, OutputCanvas, RenderTarget)",
+        "input/begin frame (reads Params, AdaptiveScale; writes Display, Device, OutputCanvas, RenderTarget)",
+        "input/gpu timer begin if output on (writes AdaptiveScale)",
         "input/reload signal (writes StopSignals, LiveTuning)",
         "input/live tuning (writes LiveTuning, Params)",
         "input/schedule (reads WallClock; writes ScheduleRun, LiveTuning, Params)",
@@ -37,6 +38,7 @@ std::vector<std::string> binary_schedule() {
     lines.insert(lines.end(), test::puddle_plugin_schedule.begin(), test::puddle_plugin_schedule.end());
     for (const char* line :
          {"present/output canvas if output on (reads OutputCanvas; writes Device)",
+          "present/adaptive scale if output on (reads Params; writes Device, AdaptiveScale)",
           "present/capture (writes Display, Device, FrameCapture)",
           "present/present (writes Display, OutputPower, PresentStatus)",
           "present/watchdog ping (reads PresentStatus; writes ServiceNotify)",
@@ -82,9 +84,12 @@ TEST(Engine, WithoutFeaturesItRunsOnlyTheDisplaysSystemsAndPresents) {
     Engine& e = **engine;
     EXPECT_EQ(e.schedule().describe(),
               (std::vector<std::string>{
-                  "input/begin frame (reads Params; writes Display, Device, OutputCanvas, RenderTarget)",
+                  "input/begin frame (reads Params, AdaptiveScale; writes Display, Device, OutputCanvas, "
+                  "RenderTarget)",
+                  "input/gpu timer begin if output on (writes AdaptiveScale)",
                   "render/count (writes Counts)",
                   "present/output canvas if output on (reads OutputCanvas; writes Device)",
+                  "present/adaptive scale if output on (reads Params; writes Device, AdaptiveScale)",
                   "present/capture (writes Display, Device, FrameCapture)",
                   "present/present (writes Display, OutputPower, PresentStatus)",
                   "exit/count exit (writes Counts)",

@@ -22,6 +22,7 @@
 #include "params/config_loader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/mosquitto_broker.hpp"
+#include "systems/adaptive_scale.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
@@ -161,6 +162,19 @@ TEST(FrameAllocation, SteadyStateFramesAllocateNothing) {
     ASSERT_TRUE(engine);
     app::FrameStats stats(0.5);
     expect_no_allocation_in_frames(*engine, stats);
+}
+
+// The adaptive scale times every frame (GPU timer queries on llvmpipe) and decides every tenth of a second
+// here; a 1 fps target is always met, so the scale stays and no canvas is remade in the counted frames.
+TEST(FrameAllocation, SteadyStateFramesWithTheAdaptiveScaleAllocateNothing) {
+    auto engine = make_engine(make_params({"render.target_fps=1"}), {160, 90});
+    ASSERT_TRUE(engine);
+    auto& adaptive = engine->world().resource<systems::AdaptiveScale>();
+    adaptive.timing.hold_s = 0.1;
+    app::FrameStats stats(0.5);
+    expect_no_allocation_in_frames(*engine, stats);
+    ASSERT_TRUE(adaptive.controller.has_value());
+    EXPECT_GT(adaptive.controller->last_cost_s(), 0.0) << "it measured frames and decided";
 }
 
 TEST(FrameAllocation, SteadyStateFramesWithLiveTuningAllocateNothing) {
