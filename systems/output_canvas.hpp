@@ -3,8 +3,8 @@
 // - display.rotation (0, 90, 180, 270, clockwise as seen on the screen), plus wall.rotation's quarter
 //   turns, done in GL: the scene renders upright into a canvas the size of the turned screen, and a last
 //   pass turns it onto the display;
-// - render.scale below 1 (or the adaptive scale's, systems/adaptive_scale.hpp): the canvas is that fraction of the screen, and the last pass scales it up
-//   with bilinear filtering;
+// - render.scale below 1 (or the adaptive scale's, systems/adaptive_scale.hpp): the canvas is that
+//   fraction of the screen, and the last pass scales it up with bilinear filtering;
 // - display.brightness below 1: the last pass multiplies every colour channel by it, once, on the
 //   display-encoded values (0.5 halves each 8-bit value: about a fifth of the light on an sRGB screen).
 // With none of them, the scene renders straight to the display and this costs nothing.
