@@ -13,17 +13,8 @@ namespace {
 
 using test::TzGuard;
 
-// A local clock time as a UTC instant, read the ordinary way (mktime), for dates without a clock change.
-double at(int y, int mo, int d, int h, int mi) {
-    tm l{};
-    l.tm_year = y - 1900;
-    l.tm_mon = mo - 1;
-    l.tm_mday = d;
-    l.tm_hour = h;
-    l.tm_min = mi;
-    l.tm_isdst = -1;
-    return static_cast<double>(mktime(&l));
-}
+// A local clock time as a UTC instant (mktime), in the zone the test set.
+constexpr auto at = test::local_instant;
 
 double utc(int y, int mo, int d, int h, int mi) {
     return static_cast<double>(days_from_civil({y, mo, d}) * 86400 + h * 3600 + mi * 60);

@@ -18,17 +18,8 @@ namespace {
 using params::ParamId;
 using params::ParamSource;
 
-// A local clock time as a UTC instant (mktime: the zone's rules, daylight saving included).
-double local(int y, int mo, int d, int h, int mi) {
-    tm l{};
-    l.tm_year = y - 1900;
-    l.tm_mon = mo - 1;
-    l.tm_mday = d;
-    l.tm_hour = h;
-    l.tm_min = mi;
-    l.tm_isdst = -1;
-    return static_cast<double>(mktime(&l));
-}
+// A local clock time as a UTC instant (mktime), in the zone the test set.
+constexpr auto local = test::local_instant;
 
 struct Rig {
     explicit Rig(const char* config_text) : tuning(params::ParamLayers(params::Presets::load({}), {})) {
