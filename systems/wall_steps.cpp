@@ -81,6 +81,8 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
         due = std::clamp<std::int64_t>(
             static_cast<std::int64_t>(steps.change_step) - 1 - static_cast<std::int64_t>(clock.step_index), 0,
             due);
+    if (steps.stop_step != 0)
+        due = std::clamp<std::int64_t>(steps.stop_step - static_cast<std::int64_t>(clock.step_index), 0, due);
     clock.steps_due = static_cast<int>(due);
 }
 

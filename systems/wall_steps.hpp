@@ -40,6 +40,9 @@ struct WallSteps {
     // Nonzero: a synced change (systems/synced_changes.hpp) applies at this step, so no frame simulates
     // it or a later one before the change is in Params.
     std::uint64_t change_step = 0;
+    // Nonzero: no frame simulates past this step (puddle --screenshot-at: every screen of a wall stops on
+    // the same step and writes it).
+    std::int64_t stop_step = 0;
     bool sync_checked = false;  // the kernel's clock discipline was looked at (warned once if unsynchronised)
 };
 

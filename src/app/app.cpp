@@ -20,6 +20,7 @@
 #include "app/service_plugin.hpp"
 #include "app/signals.hpp"
 #include "app/version.hpp"
+#include "app/wall_screenshot.hpp"
 #include "assets/image_io.hpp"
 #include "io/gpio_backend.hpp"
 #include "params/config_loader.hpp"
@@ -216,9 +217,17 @@ int run(int argc, const char* const* argv) {
                  caps.version, config_path(o).empty() ? "none" : config_path(o),
                  preset.empty() ? "none" : preset);
 
-    long frames = o.frames.value_or(headless ? headless_default_frames : 0);  // 0: run until stopped
+    long frames =
+        o.frames.value_or(headless && !o.screenshot_at ? headless_default_frames : 0);  // 0: until stopped
     std::string screenshot = o.screenshot;
     if (headless && screenshot.empty() && !o.frames) screenshot = headless_default_screenshot;
+    std::optional<WallScreenshot> wall_shot;
+    if (o.screenshot_at) {
+        auto shot = arm_wall_screenshot(e.world(), *o.screenshot_at);
+        if (!shot) return fail(shot.error());
+        wall_shot = *shot;
+        if (o.screenshot.empty()) screenshot = "puddle-wall.png";
+    }
 
     // On a kiosk screen the text console must not draw over the picture; restored on every exit path.
     const auto console = e.display().kind() == platform::BackendKind::Kms
@@ -251,10 +260,13 @@ int run(int argc, const char* const* argv) {
             headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
         last = now;
         if (!screenshot.empty() && frames != 0 && n == frames - 1) e.capture_next_frame();
+        const bool wall_shot_now = wall_shot && wall_screenshot_due(e.world(), *wall_shot);
+        if (wall_shot_now) e.capture_next_frame();
         if (auto r = e.frame(dt); !r) {  // a lost GPU or screen; the watchdog was pinged only after presents
             e.shutdown();                // knob changes are the user's data: saved on this path too
             return fail(r.error());
         }
+        if (wall_shot_now) break;
         if (o.fps_cap > 0 && !headless)
             std::this_thread::sleep_until(now + std::chrono::duration_cast<clock::duration>(
                                                     std::chrono::duration<double>(1.0 / o.fps_cap)));
@@ -274,7 +286,9 @@ int run(int argc, const char* const* argv) {
         const assets::Image image = e.captured().empty() ? e.read_frame() : e.take_captured();
         if (auto r = assets::write_png(screenshot, image); !r) return fail(r.error());
         const auto where = std::filesystem::absolute(screenshot).string();
-        if (headless && !o.frames)
+        if (wall_shot)
+            spdlog::info("wall: wave step {} written to {}", wall_shot->step, where);
+        else if (headless && !o.frames)
             spdlog::info("headless: no display here; rendered {} frames to {}", frames, where);
         else
             spdlog::info("screenshot: {}", where);

@@ -65,6 +65,12 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
                    "Stop after N frames (headless default: 180, then write a PNG; 0: run until stopped)")
         ->check(CLI::Range(0L, 1000000000L));
     cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
+    cli.add_option("--screenshot-at", o.screenshot_at,
+                   "Video walls (wall.clock = \"realtime\"): write the frame of the wave step this wall time "
+                   "falls in (seconds since the Unix epoch, e.g. $(date -d '+30 sec' +%s)) to --screenshot "
+                   "(default puddle-wall.png), then exit. Run it on every screen with the same time to check "
+                   "the wall's alignment: all write the same step")
+        ->check(CLI::Range(0.0, 1e11));
     cli.add_option("--seed", o.seed, "Rain seed (same as --set rain.seed=N): same seed, same rain")
         ->check(CLI::Range(0, 2147483647));
     cli.add_option(

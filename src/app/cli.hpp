@@ -21,9 +21,13 @@ struct CliOptions {
     platform::DisplayOptions display;
     std::optional<long> frames;  // stop after N frames (headless default: 180)
     std::string screenshot;      // write the last frame as PNG
-    std::optional<int> seed;     // shorthand for --set rain.seed=N
-    double fps_cap = 0;          // 0: the display's pace (vblank), headless: as fast as possible
-    bool fixed_step = false;     // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
+    // --screenshot-at: with wall.clock = "realtime", the wall time (seconds since the Unix epoch) whose
+    // wave step is written to `screenshot`, after which the run ends; every screen given the same time
+    // writes the same step.
+    std::optional<double> screenshot_at;
+    std::optional<int> seed;  // shorthand for --set rain.seed=N
+    double fps_cap = 0;       // 0: the display's pace (vblank), headless: as fast as possible
+    bool fixed_step = false;  // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
     std::string log_level = "info";
     std::string camera;          // --camera DEVICE|mock:PATH: environment.source = camera from that device
     double stats_every = 0;      // --stats[=SECONDS]: log fps, frame-time percentiles, CPU and memory; 0: off
