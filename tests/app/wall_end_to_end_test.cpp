@@ -26,22 +26,24 @@ long long written_step(const std::string& log) {
 
 TEST(WallEndToEnd, TwoScreensStartedApartWriteTheSameStepAtTheSameWallTime) {
     TempDir dir;
-    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(),
+                      c = (dir / "c.png").string();
     // A small field keeps the warm-up (10 s of steps at 60 a frame) within a few seconds on llvmpipe;
     // 10 s leaves 0.985^300 = 1e-2 of the later screen's start before the 5 s it runs on its own.
-    const std::string common = std::string(PUDDLE_BINARY) +
-                               " -b headless --size 160x90 --set wall.clock=realtime --set wave.resolution=128"
-                               " --set wall.warmup=10 --log-level info";
-    const long long now = std::chrono::duration_cast<std::chrono::seconds>(
-                              std::chrono::system_clock::now().time_since_epoch())
-                              .count();
+    const std::string common =
+        std::string(PUDDLE_BINARY) +
+        " -b headless --size 160x90 --set wall.clock=realtime --set wave.resolution=128"
+        " --set wall.warmup=10 --log-level info";
+    const long long now =
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
+            .count();
     const std::string at = std::to_string(now + 14), later = std::to_string(now + 15);
     // Screen A starts now, B and C three seconds later; their logs are kept apart.
     const std::string script = common + " --screenshot-at " + at + " --screenshot " + a + " > " +
                                (dir / "a.log").string() + " 2>&1 & pa=$!; sleep 3; " + common +
                                " --screenshot-at " + later + " --screenshot " + c + " > " +
-                               (dir / "c.log").string() + " 2>&1 & pc=$!; " + common + " --screenshot-at " + at +
-                               " --screenshot " + b + " > " + (dir / "b.log").string() +
+                               (dir / "c.log").string() + " 2>&1 & pc=$!; " + common + " --screenshot-at " +
+                               at + " --screenshot " + b + " > " + (dir / "b.log").string() +
                                " 2>&1; rb=$?; wait $pa; ra=$?; wait $pc; rc=$?; echo \"exit $ra $rb $rc\"";
     const CommandResult run = run_command(script);
     EXPECT_NE(run.output.find("exit 0 0 0"), std::string::npos) << run.output;
@@ -62,9 +64,10 @@ TEST(WallEndToEnd, TwoScreensStartedApartWriteTheSameStepAtTheSameWallTime) {
     EXPECT_GT(next.mean_abs_diff, 4 * same.mean_abs_diff + 0.5) << "a second later the rain has moved on";
     (void)assets::write_png((output_dir() / "wall_two_processes_a.png").string(), *ia);
     (void)assets::write_png((output_dir() / "wall_two_processes_b.png").string(), *ib);
-    std::printf("wall, two processes 3 s apart: mean difference %.3f of 255 (%.4f of pixels over 8); "
-                "one second later: %.3f\n",
-                same.mean_abs_diff, same.fraction_over, next.mean_abs_diff);
+    std::printf(
+        "wall, two processes 3 s apart: mean difference %.3f of 255 (%.4f of pixels over 8); "
+        "one second later: %.3f\n",
+        same.mean_abs_diff, same.fraction_over, next.mean_abs_diff);
 }
 
 TEST(WallEndToEnd, ScreenshotAtRefusesWithoutTheRealtimeClockOrATimeInThePast) {
@@ -72,7 +75,8 @@ TEST(WallEndToEnd, ScreenshotAtRefusesWithoutTheRealtimeClockOrATimeInThePast) {
     EXPECT_EQ(frame_clock.exit_code, 2);
     EXPECT_NE(frame_clock.output.find("--screenshot-at needs wall.clock = \"realtime\""), std::string::npos)
         << frame_clock.output;
-    const CommandResult past = run_puddle("-b headless --size 32x18 --set wall.clock=realtime --screenshot-at 1000");
+    const CommandResult past =
+        run_puddle("-b headless --size 32x18 --set wall.clock=realtime --screenshot-at 1000");
     EXPECT_EQ(past.exit_code, 2);
     EXPECT_NE(past.output.find("--screenshot-at 1000.000: that time is"), std::string::npos) << past.output;
     EXPECT_NE(past.output.find("s in the past"), std::string::npos) << past.output;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "assets/image_io.hpp"
+#include "support/golden.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
 
@@ -152,8 +153,11 @@ TEST_P(SeamlessWall, StitchedTilesEqualTheWholeView) {
 }
 
 // Bezels of 10 and 6 pixels: each tile is the whole view's crop beside the gaps (what the frames hide).
+// The default look's stitched wall is also a golden image: the README shows it.
 TEST_P(SeamlessWall, TilesBesideBezelsEqualTheirCropOfTheWholeView) {
-    keep_for_inspection(check_wall(GetParam(), {10, 6}), std::string(GetParam().name) + "_bezels");
+    const assets::Image stitched = check_wall(GetParam(), {10, 6});
+    keep_for_inspection(stitched, std::string(GetParam().name) + "_bezels");
+    if (std::string(GetParam().name) == "puddle_pulse") check_golden("wall_2x2_bezels", stitched);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SeamlessWall, ::testing::ValuesIn(scene_cases()),

@@ -1,8 +1,7 @@
-// Golden images: whole pictures for three parameter sets, compared with tests/golden/*.png.
-// Tolerance: mean channel difference at most 1.5 of 255, and at most 1% of pixels off by more than 32
-// (room for another llvmpipe or GPU's rounding, not for a changed look).
-// Regenerate after an intended change of look, then look at the pictures before committing them:
-//   PUDDLE_UPDATE_GOLDEN=1 ctest --test-dir build -R Golden
+// Golden images: whole pictures for several parameter sets, compared with tests/golden/*.png
+// (support/golden.hpp: the tolerance, and how to regenerate them after an intended change of look).
+#include "support/golden.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -20,22 +19,6 @@ struct GoldenCase {
     const char* name;
     std::initializer_list<std::string> sets;
 };
-
-void check_golden(const char* name, const assets::Image& image) {
-    ASSERT_FALSE(image.empty());
-    const std::string path = std::string(PUDDLE_SOURCE_DIR) + "/tests/golden/" + name + ".png";
-    if (std::getenv("PUDDLE_UPDATE_GOLDEN")) {
-        ASSERT_TRUE(assets::write_png(path, image).ok());
-        GTEST_SKIP() << "wrote " << path;
-    }
-    auto golden = assets::read_image(path);
-    ASSERT_TRUE(golden.ok()) << golden.error().message << " (PUDDLE_UPDATE_GOLDEN=1 makes it)";
-    const ImageDiff d = compare_images(image, *golden, 32);
-    if (d.mean_abs_diff > 1.5 || d.fraction_over > 0.01)
-        (void)assets::write_png((output_dir() / (std::string(name) + ".actual.png")).string(), image);
-    EXPECT_LE(d.mean_abs_diff, 1.5) << name << ": see test-output/" << name << ".actual.png";
-    EXPECT_LE(d.fraction_over, 0.01) << name;
-}
 
 constexpr glm::ivec2 golden_size{480, 270};
 
