@@ -5,7 +5,9 @@
 // time a remote message asks for (LiveTuning::apply_at_ns). Every screen that read the change within the
 // same period switches at the same step: the frame clock simulates up to the step before it, the change is
 // applied, and the step itself runs with it. Two reads on either side of a period boundary land one period
-// apart; a remote message's apply_at has no such edge.
+// apart; a remote message's apply_at has no such edge. An apply_at in the past, or more than an hour ahead
+// (max_apply_ahead_ns: a mistyped time would hold this and every later change), is logged as a warning
+// and the change lands at the boundary instead.
 
 #include "params/param_store.hpp"
 #include "systems/frame_clock.hpp"
@@ -15,6 +17,8 @@
 #include "systems/wall_steps.hpp"
 
 namespace puddle::systems {
+
+inline constexpr std::int64_t max_apply_ahead_ns = 3600 * ns_per_second;
 
 // Input stage, with wall.clock = "realtime", after live tuning and before wall steps: applies the layers'
 // pending change (LiveTuning::layers_changed) once the next step to simulate is its step, and until then

@@ -1,5 +1,6 @@
 #include "systems/wall_steps.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -84,6 +85,25 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
     if (steps.stop_step != 0)
         due = std::clamp<std::int64_t>(steps.stop_step - static_cast<std::int64_t>(clock.step_index), 0, due);
     clock.steps_due = static_cast<int>(due);
+}
+
+std::optional<std::string> wall_timing_problem(const params::Params& params) {
+    const bool realtime = params.get<ParamId::wall_clock>() == params::WallClockMode::realtime;
+    const int screens = params.get<ParamId::wall_columns>() * params.get<ParamId::wall_rows>();
+    if (screens > 1 && !realtime)
+        return fmt::format(
+            "a wall of {} screens with wall.clock = \"frame\": each screen counts time from its own start, "
+            "so "
+            "the ripples will not run on from one screen to the next; set [wall] clock = \"realtime\" on "
+            "every screen (README \"One clock for every screen\")",
+            screens);
+    if (realtime && params.get<ParamId::wave_damping>() >= 1.0f)
+        return std::string(
+            "wall.clock = \"realtime\" with wave.damping = 1: an undamped field never forgets how it "
+            "started, "
+            "so screens that joined at different times never match; use a wave.damping below 1 (0.985 is the "
+            "default)");
+    return std::nullopt;
 }
 
 ecs::RunCondition wall_clock_is(params::WallClockMode mode) {

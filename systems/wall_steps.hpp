@@ -18,6 +18,8 @@
 // as a forward step by the time it was off.
 
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "ecs/schedule.hpp"
 #include "params/param_store.hpp"
@@ -51,6 +53,12 @@ struct WallSteps {
 // when the kernel does not consider the clock synchronised (read_clock_sync).
 void wall_steps_system(const WallClock& wall, const OutputPower& power, const ShownLook& look,
                        const params::Params& params, WallSteps& steps, FrameClock& clock);
+
+// What keeps a wall's screens from matching however good their clocks are, as one line to log and for
+// --check: a wall of several screens whose wall.clock is "frame" (each counts from its own start), or the
+// realtime clock with wave.damping = 1 (a field that never forgets its start never converges). None
+// otherwise.
+std::optional<std::string> wall_timing_problem(const params::Params& params);
 
 // "wall.clock is realtime" / "wall.clock is frame".
 ecs::RunCondition wall_clock_is(params::WallClockMode mode);

@@ -30,6 +30,7 @@
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
+#include "systems/wall_steps.hpp"
 
 namespace puddle::app {
 
@@ -221,6 +222,7 @@ int run(int argc, const char* const* argv) {
         o.frames.value_or(headless && !o.screenshot_at ? headless_default_frames : 0);  // 0: until stopped
     std::string screenshot = o.screenshot;
     if (headless && screenshot.empty() && !o.frames) screenshot = headless_default_screenshot;
+    if (const auto problem = systems::wall_timing_problem(*params)) spdlog::warn("wall: {}", *problem);
     std::optional<WallScreenshot> wall_shot;
     if (o.screenshot_at) {
         auto shot = arm_wall_screenshot(e.world(), *o.screenshot_at);
@@ -260,7 +262,15 @@ int run(int argc, const char* const* argv) {
             headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
         last = now;
         if (!screenshot.empty() && frames != 0 && n == frames - 1) e.capture_next_frame();
-        const bool wall_shot_now = wall_shot && wall_screenshot_due(e.world(), *wall_shot);
+        bool wall_shot_now = false;
+        if (wall_shot) {
+            auto due = wall_screenshot_due(e.world(), *wall_shot);
+            if (!due) {
+                e.shutdown();
+                return fail(due.error());
+            }
+            wall_shot_now = *due;
+        }
         if (wall_shot_now) e.capture_next_frame();
         if (auto r = e.frame(dt); !r) {  // a lost GPU or screen; the watchdog was pinged only after presents
             e.shutdown();                // knob changes are the user's data: saved on this path too

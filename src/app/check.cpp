@@ -22,6 +22,7 @@
 #include "platform/drm_inventory.hpp"
 #include "schedule/time_zone.hpp"
 #include "systems/schedule_system.hpp"
+#include "systems/wall_steps.hpp"
 
 namespace puddle::app {
 
@@ -106,8 +107,10 @@ void check_saved_state(Report& r, const CliOptions& o) {
 }
 
 // The system clock as the kernel sees it (adjtimex): walls (wall.clock = "realtime") need it synchronised.
-void check_clock(Report& r, const systems::ClockSync& sync, bool realtime) {
+void check_clock(Report& r, const systems::ClockSync& sync, bool realtime,
+                 const std::optional<std::string>& wall_problem) {
     r.section("clock");
+    if (wall_problem) r.fix(*wall_problem);
     const std::string what = "system clock: " + systems::describe(sync);
     if (sync.synchronised)
         r.ok(what);
@@ -151,6 +154,7 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
     r.section("config");
     std::vector<params::KnobSpec> knobs;
     bool realtime = false;  // wall.clock in the config
+    std::optional<std::string> wall_problem;
     if (config_path.empty()) {
         r.absent("no config file (/etc/puddle/puddle.toml does not exist): built-in defaults are used");
     } else {
@@ -166,12 +170,14 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
                              config->knobs.size(), config->preset ? ", preset " : "",
                              config->preset.value_or("")));
             knobs = config->knobs;
-            realtime = layers.compose().get<params::ParamId::wall_clock>() == params::WallClockMode::realtime;
+            const params::Params composed_params = layers.compose();
+            realtime = composed_params.get<params::ParamId::wall_clock>() == params::WallClockMode::realtime;
+            wall_problem = systems::wall_timing_problem(composed_params);
             check_schedule(r, *config);
         }
     }
     if (!knobs.empty()) check_saved_state(r, o);
-    check_clock(r, sources.clock_sync(), realtime);
+    check_clock(r, sources.clock_sync(), realtime, wall_problem);
 
     r.section("display: DRM/KMS (--backend kms)");
     const auto cards = platform::list_drm_cards(sources.dri_folder);

@@ -1,5 +1,6 @@
 #include "app/wall_screenshot.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -25,26 +26,33 @@ Result<WallScreenshot> arm_wall_screenshot(ecs::World& world, double at_seconds)
     const auto* wall = world.try_resource<systems::WallClock>();
     if (!steps || !wall)
         return make_error(ExitCode::Config, "--screenshot-at: this engine has no wall clock");
+    const std::int64_t now = wall->now_ns();
+    const double ahead = at_seconds - static_cast<double>(now) * 1e-9;
+    if (!std::isfinite(at_seconds) || ahead <= 0 || ahead > 86400)
+        return make_error(ExitCode::Config,
+                          "--screenshot-at {:.3f}: {}: give a time from now to a day ahead in seconds since "
+                          "the Unix epoch, e.g. $(date -d '+1 min' +%s)",
+                          at_seconds,
+                          !std::isfinite(ahead) ? "not a time"
+                          : ahead <= 0          ? fmt::format("that time is {:.1f} s in the past", -ahead)
+                                                : fmt::format("that time is {:.0f} s ahead", ahead));
     const WallScreenshot shot{.at_ns = std::llround(at_seconds * 1e9),
                               .step = systems::step_at(std::llround(at_seconds * 1e9),
                                                        params.get<ParamId::wave_steps_per_second>())};
-    const std::int64_t now = wall->now_ns();
-    if (shot.at_ns <= now)
-        return make_error(ExitCode::Config, "--screenshot-at {:.3f}: that time is {:.1f} s in the past",
-                          at_seconds, static_cast<double>(now - shot.at_ns) * 1e-9);
     steps->stop_step = shot.step;
     spdlog::info("wall: will write wave step {} in {:.1f} s", shot.step,
                  static_cast<double>(shot.at_ns - now) * 1e-9);
     return shot;
 }
 
-bool wall_screenshot_due(ecs::World& world, const WallScreenshot& shot) {
+Result<bool> wall_screenshot_due(ecs::World& world, const WallScreenshot& shot) {
     if (static_cast<std::int64_t>(world.resource<systems::FrameClock>().step_index) >= shot.step) return true;
     if (world.resource<systems::WallClock>().now_ns() < shot.at_ns + 5 * systems::ns_per_second) return false;
-    spdlog::warn(
-        "wall: wave step {} not reached 5 s after its time (was the output off?): writing this frame",
+    return make_error(
+        ExitCode::Runtime,
+        "wall: wave step {} not reached 5 s after --screenshot-at: this screen warms up too "
+        "slowly (or its output is off); give a time further ahead, e.g. $(date -d '+1 min' +%s)",
         shot.step);
-    return true;
 }
 
 }  // namespace puddle::app

@@ -17,11 +17,12 @@ struct WallScreenshot {
 };
 
 // Sets the stop step in `world`'s WallSteps. Errors (exit code 2): wall.clock is not "realtime", the
-// engine has no wall clock (no puddle feature), or TIME is not in the future.
+// engine has no wall clock (no puddle feature), or TIME is not a time from now to a day ahead.
 Result<WallScreenshot> arm_wall_screenshot(ecs::World& world, double at_seconds);
 
-// True when the next frame is the one to capture: the frame clock stands at the step. Also true, with a
-// warning, once the wall clock is 5 s past TIME without reaching it (the output was off), so the run ends.
-bool wall_screenshot_due(ecs::World& world, const WallScreenshot& shot);
+// True when the next frame is the one to capture: the frame clock stands at the step. An error (exit code
+// 1) once the wall clock is 5 s past TIME without reaching it (a screen that warms up too slowly, or
+// whose output is off): a later frame would be another step, not the wall's.
+Result<bool> wall_screenshot_due(ecs::World& world, const WallScreenshot& shot);
 
 }  // namespace puddle::app

@@ -80,6 +80,13 @@ TEST(WallEndToEnd, ScreenshotAtRefusesWithoutTheRealtimeClockOrATimeInThePast) {
     EXPECT_EQ(past.exit_code, 2);
     EXPECT_NE(past.output.find("--screenshot-at 1000.000: that time is"), std::string::npos) << past.output;
     EXPECT_NE(past.output.find("s in the past"), std::string::npos) << past.output;
+    // Past the int64 nanoseconds of 2262, and centuries ahead: refused, not waited for or wrapped around.
+    for (const char* at : {"9300000000", "9000000000", "nan"}) {
+        const CommandResult far = run_puddle(
+            std::string("-b headless --size 32x18 --set wall.clock=realtime --screenshot-at ") + at);
+        EXPECT_EQ(far.exit_code, 2) << at;
+        EXPECT_NE(far.output.find("give a time from now to a day ahead"), std::string::npos) << far.output;
+    }
 }
 
 }  // namespace

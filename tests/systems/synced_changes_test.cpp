@@ -112,5 +112,25 @@ TEST(SyncedChanges, ARemoteApplyAtIsTheStep) {
     EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(at, 60.0));
 }
 
+// An apply_at far ahead (a typo: the year 2255) or already past lands at the next boundary: held for it,
+// this change and every later one would wait for centuries.
+TEST(SyncedChanges, AnApplyAtPastOrMoreThanAnHourAheadLandsAtTheBoundary) {
+    for (const std::int64_t offset : {-5 * ns_per_second, max_apply_ahead_ns + ns_per_second,
+                                      std::int64_t{9'000'000'000} * ns_per_second - start_ns}) {
+        SCOPED_TRACE(offset);
+        Screen a(0);
+        for (int i = 0; i < 30; ++i) a.frame();
+        a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
+        a.tuning->layers_changed = true;
+        a.tuning->change_reason = "remote";
+        a.tuning->apply_at_ns = a.now + offset;
+        const std::int64_t read_at = a.now;
+        for (int i = 0; i < 180; ++i) a.frame();
+        ASSERT_TRUE(a.first_new_step);
+        EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(read_at, 1.0), 60.0));
+        EXPECT_FALSE(a.tuning->layers_changed) << "nothing left pending";
+    }
+}
+
 }  // namespace
 }  // namespace puddle::systems

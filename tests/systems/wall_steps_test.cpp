@@ -206,5 +206,22 @@ TEST(WallSteps, AChangesStepWaitsForTheChange) {
     EXPECT_TRUE(s.in_step());
 }
 
+// A wall that can never match is said once at start-up and by --check, whatever the clocks.
+TEST(WallTimingProblem, AWallOnTheFrameClockOrAnUndampedRealtimeFieldIsNamed) {
+    params::Params p;
+    EXPECT_EQ(wall_timing_problem(p), std::nullopt) << "one screen, the frame clock";
+    p.set<ParamId::wall_columns>(2, ParamSource::Config);
+    p.set<ParamId::wall_rows>(2, ParamSource::Config);
+    const auto frame = wall_timing_problem(p);
+    ASSERT_TRUE(frame.has_value());
+    EXPECT_NE(frame->find("a wall of 4 screens with wall.clock = \"frame\""), std::string::npos) << *frame;
+    p.set<ParamId::wall_clock>(params::WallClockMode::realtime, ParamSource::Config);
+    EXPECT_EQ(wall_timing_problem(p), std::nullopt);
+    p.set<ParamId::wave_damping>(1.0f, ParamSource::Config);
+    const auto undamped = wall_timing_problem(p);
+    ASSERT_TRUE(undamped.has_value());
+    EXPECT_NE(undamped->find("wave.damping = 1"), std::string::npos) << *undamped;
+}
+
 }  // namespace
 }  // namespace puddle::systems
