@@ -121,6 +121,22 @@ TEST(ParseConfig, UnknownKeyNamesFileLineKeyAndSuggestion) {
               "config: file.toml:3: unknown key 'rain.drop_cont' (did you mean 'rain.drop_count'?)");
 }
 
+// Letters outside ASCII where TOML wants a key, whitespace or '=' (toml++ 3.3 checks them against a
+// whitespace table that has no case for U+00A1..U+0499 or U+2D6E..U+3167: see CMakeLists.txt's sanitizer
+// flags). Each is one line naming the line and the character; in a string or a comment they are fine.
+TEST(ParseConfig, NonAsciiOutsideStringsIsASyntaxErrorNamingTheCharacter) {
+    EXPECT_TRUE(has_text(config_error("[rain]\nintensit\xc3\xa9 = 0.5\n").message, "file.toml:2:"));
+    EXPECT_TRUE(has_text(config_error("[rain]\nintensit\xc3\xa9 = 0.5\n").message, "saw '\xc3\xa9'"));
+    EXPECT_TRUE(has_text(config_error("kindt\xc6\x9b\"\nline = 22\n").message, "saw '\xc6\x9b'"));
+    EXPECT_TRUE(has_text(config_error("[rain] \xe3\x80\x81\n").message, "saw '\xe3\x80\x81'"));
+    EXPECT_TRUE(has_text(config_error("[rain]\nintensity = 0.5 \xce\xbb\n").message, "file.toml:2:"));
+    auto ok = parse_config(
+        "# pluie fine, \xc3\xa9t\xc3\xa9 \xe3\x80\x81\n[environment]\nimage = "
+        "\"/srv/\xc3\xa9t\xc3\xa9.hdr\"\n",
+        "file.toml");
+    EXPECT_TRUE(ok) << ok.error().message;
+}
+
 TEST(ParseConfig, UnknownSectionIsAnUnknownKey) {
     const Error e = config_error("[rian]\ndrop_count = 20\n");
     EXPECT_EQ(e.message,
