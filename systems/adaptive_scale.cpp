@@ -3,15 +3,10 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <chrono>
 
 namespace puddle::systems {
 
 using params::ParamId;
-
-double steady_seconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 double resolved_target_fps(const params::Params& params, double display_refresh_hz) {
     const int target = params.get<ParamId::render_target_fps>();

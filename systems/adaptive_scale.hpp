@@ -13,11 +13,9 @@
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
 #include "systems/scale_controller.hpp"
+#include "util/monotonic_clock.hpp"
 
 namespace puddle::systems {
-
-// Seconds on the monotonic clock (CLOCK_MONOTONIC via std::chrono::steady_clock).
-double steady_seconds();
 
 // Resource.
 struct AdaptiveScale {
@@ -28,8 +26,8 @@ struct AdaptiveScale {
     std::optional<ScaleController> controller;  // while on
     gpu::GpuTimer timer;                        // made the first time it is on
     bool timer_made = false;
-    double last_frame_s = -1;            // the clock at the previous frame's end; -1: none yet
-    double (*clock)() = steady_seconds;  // tests may step their own
+    double last_frame_s = -1;               // the clock at the previous frame's end; -1: none yet
+    double (*clock)() = monotonic_seconds;  // tests may step their own
 };
 
 // render.target_fps as frames per second: -1 is the display's refresh (0 without one), 0 is off.

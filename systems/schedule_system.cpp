@@ -52,12 +52,6 @@ std::vector<int> entries_of_transition(const std::vector<int>& before, const std
 
 }  // namespace
 
-double system_wall_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_REALTIME, &ts);
-    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
-}
-
 std::optional<schedule::Calendar> make_calendar(const params::Config& config) {
     if (config.schedule.empty()) return std::nullopt;
     std::vector<schedule::Rule> rules;

@@ -21,9 +21,6 @@
 
 namespace puddle::systems {
 
-// Seconds since the Unix epoch (UTC), from CLOCK_REALTIME.
-double system_wall_seconds();
-
 // Resource.
 struct ScheduleRun {
     std::optional<schedule::Calendar> calendar;           // none when the config has no [[schedule]] table

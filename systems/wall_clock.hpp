@@ -14,6 +14,10 @@ inline constexpr std::int64_t ns_per_second = 1'000'000'000;
 
 // Nanoseconds since the Unix epoch (1970-01-01 00:00:00 UTC), from CLOCK_REALTIME.
 std::int64_t system_wall_ns();
+// The same in seconds (the schedule's calendar times).
+inline double system_wall_seconds() {
+    return static_cast<double>(system_wall_ns()) * 1e-9;
+}
 
 // What the kernel says of the clock's discipline (adjtimex(2); ntp_adjtime in chrony's and linuxptp's
 // terms): `synchronised` is false while STA_UNSYNC is set or adjtimex returns TIME_ERROR, which is the case
