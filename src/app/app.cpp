@@ -16,6 +16,7 @@
 #include "app/logging.hpp"
 #include "app/process_setup.hpp"
 #include "app/remote_plugin.hpp"
+#include "app/screenshot_file.hpp"
 #include "app/service_notify.hpp"
 #include "app/service_plugin.hpp"
 #include "app/signals.hpp"
@@ -294,7 +295,7 @@ int run(int argc, const char* const* argv) {
     if (!screenshot.empty()) {
         // Both branches are values: a `const Image&` bound to `cond ? read_frame() : captured()` was a copy.
         const assets::Image image = e.captured().empty() ? e.read_frame() : e.take_captured();
-        if (auto r = assets::write_png(screenshot, image); !r) return fail(r.error());
+        if (auto r = write_screenshot(screenshot, image); !r) return fail(r.error());
         const auto where = std::filesystem::absolute(screenshot).string();
         if (wall_shot)
             spdlog::info("wall: wave step {} written to {}", wall_shot->step, where);

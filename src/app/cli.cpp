@@ -64,7 +64,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
     cli.add_option("--frames,-n", o.frames,
                    "Stop after N frames (headless default: 180, then write a PNG; 0: run until stopped)")
         ->check(CLI::Range(0L, 1000000000L));
-    cli.add_option("--screenshot", o.screenshot, "Write the last frame to this PNG file");
+    cli.add_option("--screenshot", o.screenshot,
+                   "Write the last frame to this file: JPEG when it ends in .jpg or .jpeg, else PNG");
     cli.add_option("--screenshot-at", o.screenshot_at,
                    "Video walls (wall.clock = \"realtime\"): write the frame of the wave step this wall time "
                    "falls in (seconds since the Unix epoch, e.g. $(date -d '+30 sec' +%s)) to --screenshot "

@@ -30,6 +30,16 @@ void begin_frame_system(platform::Display& display, gpu::Device& device, const p
             "wall: this screen shows {}x{} pixels at ({:.0f}, {:.0f}) from the top left of the "
             "{:.0f}x{:.0f} view",
             upright.x, upright.y, corner.x, corner.y, view.x, view.y);
+        // Valid but almost surely a mistake: a bezel is the gap between two pictures in this screen's
+        // pixels (both frames together, a few dozen pixels), not the wall's size or millimetres.
+        const float bezel_x = params.get<params::ParamId::wall_bezel_x>();
+        const float bezel_y = params.get<params::ParamId::wall_bezel_y>();
+        if (bezel_x > static_cast<float>(upright.x) || bezel_y > static_cast<float>(upright.y))
+            spdlog::warn(
+                "wall: wall.bezel_x = {:g}, wall.bezel_y = {:g} pixels: a bezel wider than this {}x{} screen "
+                "hides more of the picture than a screen shows; bezels are the gap between two pictures in "
+                "this screen's pixels (README \"Video walls\")",
+                bezel_x, bezel_y, upright.x, upright.y);
     }
     target.view = window;
 }

@@ -27,9 +27,16 @@ std::string origin(const Params& params, const Config& config, ParamId id, int v
 Result<void> check_position(const Params& params, const Config& config, ParamId position, ParamId count) {
     const int p = std::get<int>(params.at(position)), n = std::get<int>(params.at(count));
     if (p < n) return {};
-    return make_error(ExitCode::Config, "{}: {} = {} is out of range: allowed 0 to {} (0-based; {} = {})",
-                      origin(params, config, position, p), decl(position).name, p, n - 1, decl(count).name,
-                      n);
+    // The wall's size set elsewhere than the position (the config's columns, a --set column): name both,
+    // so the person fixes the one that is wrong.
+    const ParamSource count_source = params.source(count);
+    const std::string count_origin =
+        count_source != params.source(position) && count_source != ParamSource::Default
+            ? fmt::format(", from {}", origin(params, config, count, n))
+            : std::string();
+    return make_error(ExitCode::Config, "{}: {} = {} is out of range: allowed 0 to {} (0-based; {} = {}{})",
+                      origin(params, config, position, p), decl(position).name, p, n - 1, decl(count).name, n,
+                      count_origin);
 }
 
 }  // namespace

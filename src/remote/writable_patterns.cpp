@@ -31,7 +31,7 @@ WritablePatterns::WritablePatterns(std::string_view text) {
 }
 
 bool WritablePatterns::device_setting(std::string_view name) {
-    constexpr std::array<std::string_view, 3> never{"remote.", "display.", "environment.camera_"};
+    constexpr std::array<std::string_view, 4> never{"remote.", "display.", "environment.camera_", "wall."};
     for (std::string_view prefix : never)
         if (name.starts_with(prefix)) return true;
     return false;

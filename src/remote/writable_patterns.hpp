@@ -2,7 +2,8 @@
 // Which parameters the broker may set (remote.writable): comma-separated names ("rain.seed") or prefix
 // patterns ("rain.*"), or "*" for everything allowed at all. Settings of the device itself are never
 // writable, whatever the patterns say: remote.* (the broker, its credentials), display.* (the screen a
-// kiosk drives) and environment.camera_* (which device file is opened).
+// kiosk drives), environment.camera_* (which device file is opened) and wall.* (where this screen sits in
+// a video wall: one message to a fleet would give every screen the same place).
 
 #include <string>
 #include <string_view>

@@ -116,7 +116,9 @@ TEST_F(LoadTuning, AScreenOffTheWallIsAConfigError) {
     EXPECT_EQ(r.error().code, ExitCode::Config);
     EXPECT_EQ(
         r.error().message,
-        "--set wall.column=2: wall.column = 2 is out of range: allowed 0 to 1 (0-based; wall.columns = 2)");
+        "--set wall.column=2: wall.column = 2 is out of range: allowed 0 to 1 (0-based; wall.columns = 2, "
+        "from config: " +
+            o.config_path + ":2)");
     o.sets = {"wall.row=1", "wall.column=1"};
     EXPECT_EQ(compose(o).get<ParamId::wall_column>(), 1);
 }

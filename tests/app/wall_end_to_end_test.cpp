@@ -70,6 +70,22 @@ TEST(WallEndToEnd, TwoScreensStartedApartWriteTheSameStepAtTheSameWallTime) {
         same.mean_abs_diff, same.fraction_over, next.mean_abs_diff);
 }
 
+TEST(WallEndToEnd, ABezelWiderThanTheScreenIsWarnedAboutOnceAndAUsualOneIsNot) {
+    const std::string wall = "-b headless --size 64x36 --frames 3 --set wall.columns=2 --set wall.rows=2 ";
+    const CommandResult huge = run_puddle(wall + "--set wall.bezel_x=100");
+    EXPECT_EQ(huge.exit_code, 0) << huge.output;  // valid: the screen keeps running
+    const std::string warning = "a bezel wider than this 64x36 screen";
+    const auto first = huge.output.find(warning);
+    EXPECT_NE(first, std::string::npos) << huge.output;
+    EXPECT_EQ(huge.output.find(warning, first + 1), std::string::npos) << "once, not every frame:\n"
+                                                                       << huge.output;
+    const CommandResult tall = run_puddle(wall + "--set wall.bezel_y=40");
+    EXPECT_NE(tall.output.find(warning), std::string::npos) << tall.output;
+    const CommandResult usual = run_puddle(wall + "--set wall.bezel_x=12 --set wall.bezel_y=12");
+    EXPECT_EQ(usual.exit_code, 0) << usual.output;
+    EXPECT_EQ(usual.output.find("bezel wider"), std::string::npos) << usual.output;
+}
+
 TEST(WallEndToEnd, ScreenshotAtRefusesWithoutTheRealtimeClockOrATimeInThePast) {
     const CommandResult frame_clock = run_puddle("-b headless --size 32x18 --screenshot-at 9999999999");
     EXPECT_EQ(frame_clock.exit_code, 2);

@@ -54,7 +54,21 @@ TEST(WallCheck, CommandLineAcrossLayersIsChecked) {
     ASSERT_FALSE(r);
     EXPECT_EQ(
         r.error().message,
-        "--set wall.column=2: wall.column = 2 is out of range: allowed 0 to 1 (0-based; wall.columns = 2)");
+        "--set wall.column=2: wall.column = 2 is out of range: allowed 0 to 1 (0-based; wall.columns = 2, "
+        "from config: test.toml:2)");
+}
+
+// The config places the screen and --set shrinks the wall: both are named, the person fixes either.
+TEST(WallCheck, AWallShrunkOnTheCommandLineNamesTheSetToo) {
+    auto set = parse_assignment("wall.columns=1");
+    ASSERT_TRUE(set);
+    ParamLayers l = layers({*set});
+    auto r = l.set_config(test::parsed_config("[wall]\ncolumns = 2\ncolumn = 1\n"));
+    ASSERT_FALSE(r);
+    EXPECT_EQ(
+        r.error().message,
+        "config: test.toml:3: wall.column = 1 is out of range: allowed 0 to 0 (0-based; wall.columns = 1, "
+        "from --set wall.columns=1)");
 }
 
 // A reload that moves the screen off the wall is refused and the last good config stays.

@@ -48,6 +48,7 @@ TEST(WritablePatterns, PrefixPatternsAndNamesButNeverDeviceSettings) {
     EXPECT_FALSE(w.allows(params::decl(ParamId::display_card)));
     EXPECT_FALSE(w.allows(params::decl(ParamId::remote_host)));
     EXPECT_FALSE(w.allows(params::decl(ParamId::environment_camera_device)));
+    EXPECT_FALSE(w.allows(params::decl(ParamId::wall_column)));  // where this screen sits in a wall
     const WritablePatterns narrow("rain.*");
     EXPECT_FALSE(narrow.allows(params::decl(ParamId::look_vignette)));
     EXPECT_FALSE(WritablePatterns("rain").allows(params::decl(ParamId::rain_intensity)));
