@@ -48,8 +48,9 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # --- the sysroot: the -dev packages of setup.sh, for arm64, and everything they depend on ----------
+# Every -dev package but the build machine's own tools (dpkg-dev for cpack, clang's sanitizer runtime).
 mapfile -t target_packages < <(sed -n '/^packages=(/,/^)/p' deploy/setup.sh | sed 's/#.*//' |
-    tr -s ' \t' '\n' | grep -E '^lib[a-z0-9.+-]*-dev$')
+    tr -s ' \t' '\n' | grep -E -- '-dev$' | grep -v -x -E 'dpkg-dev|libclang-rt-[0-9]+-dev')
 target_packages+=(libc6-dev libstdc++-12-dev)
 
 apt_arm64=(apt-get -o Debug::NoLocking=1 -o Dir::State::status="$sysroot.apt/status"
