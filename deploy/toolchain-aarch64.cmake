@@ -11,6 +11,8 @@ set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)
 set(CMAKE_C_COMPILER aarch64-linux-gnu-gcc)
 set(CMAKE_CXX_COMPILER aarch64-linux-gnu-g++)
+set(PUDDLE_DEB_ARCH arm64)                 # the .deb's Architecture (CMakeLists.txt, CPack section)
+set(PUDDLE_MULTIARCH aarch64-linux-gnu)    # where the sysroot's libraries lie
 
 if(NOT PUDDLE_SYSROOT)
     if(DEFINED ENV{PUDDLE_SYSROOT})
