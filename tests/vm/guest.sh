@@ -1,6 +1,7 @@
 #!/bin/bash
-# Runs inside the test VM, chrooted into the host's root file system (see tests/vm/init), so every
-# program here is the host's own: the puddle binary just built, bash, v4l2-ctl, Mesa. It reports to
+# Runs inside the test VM as the oneshot unit puddle-vm-test.service, under systemd, on an overlay of
+# the host's root file system (see tests/vm/init), so every program here is the host's own: the
+# puddle binary just built, bash, v4l2-ctl, Mesa, systemd, dpkg. It reports to
 # the host on the serial console with lines that start with "VMTEST:":
 #   VMTEST: PASS name: what held          VMTEST: FAIL name: what went wrong
 #   VMTEST: SKIP name: why                VMTEST: screendump NAME (the host answers "VMTEST-ACK NAME")
@@ -309,6 +310,9 @@ for t in $VM_TESTS; do
         gpio) gpio_test ;;
         power) power_test ;;
         cec) cec_test ;;
+        service)
+            # shellcheck source=tests/vm/service.sh
+            . "$VM_SRC/tests/vm/service.sh" ;;
         *) say "FAIL $t: unknown test" ;;
     esac
 done
