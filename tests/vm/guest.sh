@@ -303,6 +303,7 @@ cec_test() {
     "$busybox" rmmod vivid || say "NOTE cec: vivid did not unload"
 }
 
+say "NOTE boot: the tests start $(cut -d ' ' -f 1 /proc/uptime) s after the kernel (systemd $(systemctl --version | awk 'NR == 1 { print $2 }'), $(systemctl is-system-running 2>/dev/null))"
 for t in $VM_TESTS; do
     case $t in
         kms) kms_test ;;
@@ -316,3 +317,5 @@ for t in $VM_TESTS; do
         *) say "FAIL $t: unknown test" ;;
     esac
 done
+# The VM's journal, for whoever reads the results (build/vm-test/share/journal.txt).
+journalctl -b -o short-monotonic --no-pager >"$out/journal.txt" 2>&1
