@@ -105,7 +105,7 @@ svc_install() {
 
 # The test's settings, as a user would make them for a slow board: a small wave field and sky, the
 # checkerboard ground (no procedural paving), few drops, a fixed seed and no adaptive scale (the
-# screen's refresh would lower the render scale while llvmpipe lags), half the render size; the drop-in
+# screen's refresh would lower the render scale while llvmpipe lags); the drop-in
 # also gives a board this slow more time: TimeoutStartSec (llvmpipe in an emulated CPU took 30 to 64 s
 # to its first frame) and WatchdogSec (a frame took over 10 s on a loaded 2-core host). Without
 # a GPIO chip, a switch on puddle's mock GPIO backend (fed from svc_knobs) is the state check's knob.
@@ -113,7 +113,7 @@ svc_knobs=/run/vm/knobs.txt
 svc_configure() {
     svc_set rain seed 7 && svc_set rain drop_count 32 && svc_set rain intensity 1.5 &&
         svc_set wave resolution 128 && svc_set render target_fps 0 && svc_set environment face_size 64 &&
-        svc_set ground checkerboard true && svc_set render scale 0.5 || return 1
+        svc_set ground checkerboard true || return 1
     local gpio=""
     if ! ls /dev/gpiochip* >/dev/null 2>&1; then
         printf '\n[[knob]]\nkind = "switch"\nline = 22\nparam = "overlay.rain"\n' >>/etc/puddle/puddle.toml
