@@ -1,6 +1,7 @@
 #!/bin/bash
-# Runs inside the test VM, chrooted into the host's root file system (see tests/vm/init), so every
-# program here is the host's own: the puddle binary just built, bash, v4l2-ctl, Mesa. It reports to
+# Runs inside the test VM as the oneshot unit puddle-vm-test.service, under systemd, on an overlay of
+# the host's root file system (see tests/vm/init), so every program here is the host's own: the
+# puddle binary just built, bash, v4l2-ctl, Mesa, systemd, dpkg. It reports to
 # the host on the serial console with lines that start with "VMTEST:":
 #   VMTEST: PASS name: what held          VMTEST: FAIL name: what went wrong
 #   VMTEST: SKIP name: why                VMTEST: screendump NAME (the host answers "VMTEST-ACK NAME")
@@ -302,6 +303,7 @@ cec_test() {
     "$busybox" rmmod vivid || say "NOTE cec: vivid did not unload"
 }
 
+say "NOTE boot: the tests start $(cut -d ' ' -f 1 /proc/uptime) s after the kernel (systemd $(systemctl --version | awk 'NR == 1 { print $2 }'), $(systemctl is-system-running 2>/dev/null))"
 for t in $VM_TESTS; do
     case $t in
         kms) kms_test ;;
@@ -309,6 +311,11 @@ for t in $VM_TESTS; do
         gpio) gpio_test ;;
         power) power_test ;;
         cec) cec_test ;;
+        service)
+            # shellcheck source=tests/vm/service.sh
+            . "$VM_SRC/tests/vm/service.sh" ;;
         *) say "FAIL $t: unknown test" ;;
     esac
 done
+# The VM's journal, for whoever reads the results (build/vm-test/share/journal.txt).
+journalctl -b -o short-monotonic --no-pager >"$out/journal.txt" 2>&1
