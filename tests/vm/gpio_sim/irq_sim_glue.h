@@ -9,11 +9,10 @@
 #include <linux/irqdesc.h>
 #include <linux/module.h>
 
-static inline struct irq_desc *puddle_irq_to_desc(unsigned int irq)
-{
-	struct irq_data *data = irq_get_irq_data(irq);
+static inline struct irq_desc* puddle_irq_to_desc(unsigned int irq) {
+    struct irq_data* data = irq_get_irq_data(irq);
 
-	return data ? irq_data_to_desc(data) : NULL;
+    return data ? irq_data_to_desc(data) : NULL;
 }
 /* irqdesc.h's declaration is already seen; from here on irq_sim.c's calls use the lookup above. */
 #define irq_to_desc puddle_irq_to_desc
