@@ -51,7 +51,10 @@ gpio_sim_live() {
 # A contact: "down" closes it (the line reads low, active), "up" opens it (the pull-up wins).
 gpio_pull() {
     echo "pull-$2" >"/sys/devices/platform/$gpio_platform/$gpio_chip/sim_gpio$1/pull"
-    sleep 0.05  # distinct event timestamps, and the order the decoder sees is the order written
+    # The kernel timestamps an edge in its interrupt handler but reads the level for the event later, in
+    # a thread: two changes closer than that thread's delay (long in a loaded emulated VM) would both
+    # report the last level. A hand turning a knob is slower than this anyway.
+    sleep 0.25
 }
 gpio_value() { cat "/sys/devices/platform/$gpio_platform/$gpio_chip/sim_gpio$1/value"; }
 
@@ -148,7 +151,7 @@ active_low = true"
     gpio_puddle_start "$config" "$state" "$gpio_log"
 
     # 1. Lines by name, bias and active-low as the kernel reports them.
-    if ! gpio_wait 'kms: frame 1 on screen' 120; then
+    if ! gpio_wait 'kms: frame 1 on screen' 240; then
         say "FAIL $tag-lines: puddle showed no frame (log: $tag.log): $(grep -m1 -E '^(warning|error)' "$gpio_log")"
         gpio_puddle_alive && gpio_puddle_stop
         return

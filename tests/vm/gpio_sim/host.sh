@@ -71,6 +71,10 @@ gpio_fetch_tools() {
 # Debian 13's libgpiod in its own build folder (PUDDLE_VM_GPIOD2_BUILD, default BUILD/gpiod2).
 gpio_build_v2() {
     local dir=${PUDDLE_VM_GPIOD2_BUILD:-$build/gpiod2} start=$SECONDS rc
+    if [ "${PUDDLE_VM_GPIOD2:-on}" = off ]; then
+        gpio_puddle2_why="PUDDLE_VM_GPIOD2=off"
+        return
+    fi
     say "gpio: building puddle against libgpiod 2 in $dir"
     "$here/gpio_sim/build-gpiod2" "$src" "$dir" "$cache" >"$out/gpiod2-build.log" 2>&1
     rc=$?
