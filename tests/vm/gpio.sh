@@ -91,9 +91,10 @@ fi
 # after the mark (it sets gpio_line), at most SECONDS.
 gpio_mark() { gpio_from=$(($(wc -l <"$gpio_log") + 1)); }
 gpio_after() { tail -n "+$gpio_from" "$gpio_log"; }
+# Deadlines are wall-clock seconds: one poll can take long in a loaded emulated VM (the log is on 9p).
 gpio_wait() {  # regex, seconds
-    local i
-    for ((i = 0; i < $2 * 10; ++i)); do
+    local end=$((SECONDS + $2))
+    while [ $SECONDS -lt $end ]; do
         gpio_line=$(gpio_after | grep -E -m1 -- "$1") && return 0
         gpio_puddle_alive || { gpio_line=""; return 1; }
         sleep 0.1
@@ -104,8 +105,8 @@ gpio_wait() {  # regex, seconds
 # The value a parameter has after the last change the log shows ("knob: look.vignette 0.5 -> 1.1").
 gpio_value_of() { grep -o -E "$1 [^ ]+ -> [^ ,]+" "$gpio_log" | tail -n 1 | sed 's/.* -> //'; }
 gpio_wait_value() {  # param, value, seconds
-    local i
-    for ((i = 0; i < $3 * 10; ++i)); do
+    local end=$((SECONDS + $3))
+    while [ $SECONDS -lt $end ]; do
         [ "$(gpio_value_of "$1")" = "$2" ] && return 0
         gpio_puddle_alive || return 1
         sleep 0.1
