@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace puddle::io {
 
@@ -32,12 +33,15 @@ bool Knob::try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out)
     }
     if (!a || !b) {
         const std::string message = (!a ? a.error() : b.error()).message;
-        // One warning per distinct problem: a knob that stays unplugged does not flood the journal.
-        if (message != last_warning_)
+        // One warning per distinct problem: a knob that stays unplugged does not flood the journal. Just
+        // after its lines went away the chip is missing: the same unplug, already warned about.
+        const bool unplug_warned = std::exchange(unplugged_, false);
+        if (message != last_warning_ && !unplug_warned)
             spdlog::warn("{} (knob: {}; retrying every {:g} s)", message, spec_.describe(), retry_seconds);
         last_warning_ = message;
         return false;
     }
+    unplugged_ = false;
     line_a_ = std::move(*a);
     line_b_ = std::move(*b);
     if (!last_warning_.empty()) spdlog::info("gpio: knob {} works now", spec_.describe());
@@ -82,6 +86,7 @@ void Knob::update(GpioBackend& gpio, double now, std::vector<KnobAction>& out) {
         spdlog::warn("{} (knob: {}); retrying every {:g} s", (!na ? na.error() : nb.error()).message,
                      spec_.describe(), retry_seconds);
         last_warning_ = "gone";
+        unplugged_ = true;
         close_lines();
         next_try_ = now + retry_seconds;
         return;

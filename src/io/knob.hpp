@@ -44,6 +44,8 @@ private:
     std::unique_ptr<GpioLine> line_a_, line_b_;
     double next_try_ = 0;
     std::string last_warning_;
+    bool unplugged_ =
+        false;  // the lines went away and that was warned about; the retry that follows is quiet
     QuadratureDecoder decoder_;
     bool a_ = true, b_ = true;
     double last_detent_ = -1e9;

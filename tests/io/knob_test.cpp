@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "io/gpio_mock.hpp"
+#include "support/log_lines.hpp"
 #include "support/test_support.hpp"
 
 namespace puddle::io {
@@ -159,6 +160,29 @@ TEST(Knob, UnpluggedChipClosesTheKnobAndReplugReopensIt) {
     rig.gpio.add_chip("gpiochip0");
     knob.update(rig.gpio, 2.0 + Knob::retry_seconds, rig.actions);
     EXPECT_TRUE(knob.open());
+}
+
+TEST(Knob, UnplugIsOneWarningAndTheRetriesWhileGoneAreQuiet) {
+    // On a real chip (gpio-sim's live=0 in the VM test) the lines fail first, then every retry finds no
+    // chip: one problem, one warning; coming back is one info line.
+    Rig rig;
+    Knob knob(encoder());
+    knob.update(rig.gpio, 1.0, rig.actions);
+    ASSERT_TRUE(knob.open());
+    test::LogLines warnings(spdlog::level::warn);
+    test::LogLines infos(spdlog::level::info);
+    rig.gpio.remove_chip("gpiochip0");
+    for (int i = 0; i < 4; ++i) knob.update(rig.gpio, 2.0 + i * Knob::retry_seconds, rig.actions);
+    EXPECT_FALSE(knob.open());
+    EXPECT_EQ(warnings.count("gpio"), 1);
+    rig.gpio.add_chip("gpiochip0");
+    knob.update(rig.gpio, 2.0 + 5 * Knob::retry_seconds, rig.actions);
+    EXPECT_TRUE(knob.open());
+    EXPECT_EQ(infos.count("works now"), 1);
+    rig.gpio.remove_chip("gpiochip0");  // a second unplug warns again
+    knob.update(rig.gpio, 30.0, rig.actions);
+    knob.update(rig.gpio, 30.0 + Knob::retry_seconds, rig.actions);
+    EXPECT_EQ(warnings.count("gpio"), 2);
 }
 
 }  // namespace
