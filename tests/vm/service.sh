@@ -108,14 +108,23 @@ svc_install() {
 # screen's refresh would lower the render scale while llvmpipe lags); the drop-in
 # also gives a board this slow more time: TimeoutStartSec (llvmpipe in an emulated CPU took 30 to 64 s
 # to its first frame) and WatchdogSec (a frame took over 10 s on a loaded 2-core host). Without
-# a GPIO chip, a switch on puddle's mock GPIO backend (fed from svc_knobs) is the state check's knob.
+# a GPIO chip, a switch on puddle's mock GPIO backend (fed from svc_knobs) is the state check's knob; with
+# the gpio test's gpio-sim chip (tests/vm/gpio.sh, which runs before this and leaves it configured but not
+# live) it is a switch on that real chip, opened by the service as user puddle through the shipped udev
+# rule's gpio group, wired as the README says (chip by label, line by name, pull-up, active low).
 svc_knobs=/run/vm/knobs.txt
+svc_real_chip=0
 svc_configure() {
     svc_set rain seed 7 && svc_set rain drop_count 32 && svc_set rain intensity 1.5 &&
         svc_set wave resolution 128 && svc_set render target_fps 0 && svc_set environment face_size 64 &&
         svc_set ground checkerboard true || return 1
     local gpio=""
-    if ! ls /dev/gpiochip* >/dev/null 2>&1; then
+    if [ -d /sys/kernel/config/gpio-sim/puddle ] && declare -F gpio_sim_live >/dev/null && gpio_sim_live 1; then
+        gpio_pull 27 up  # the contact open
+        printf '\n[[knob]]\nkind = "switch"\nchip = "%s"\nline = "GPIO27"\nbias = "pull-up"\nactive_low = true\nparam = "overlay.rain"\n' \
+            "$gpio_label" >>/etc/puddle/puddle.toml
+        svc_real_chip=1
+    elif ! ls /dev/gpiochip* >/dev/null 2>&1; then
         printf '\n[[knob]]\nkind = "switch"\nline = 22\nparam = "overlay.rain"\n' >>/etc/puddle/puddle.toml
         : >"$svc_knobs" && chmod 644 "$svc_knobs"
         gpio=" --gpio mock:$svc_knobs"
@@ -295,20 +304,23 @@ svc_reload() {
 # and the restarted process restores it.
 svc_state() {
     local chips=(/dev/gpiochip*)
-    if [ -e "${chips[0]}" ]; then
-        # HOOK (gpio-sim): with a chip present, wire a [[knob]] to it in /etc/puddle/puddle.toml (in
-        # svc_configure, before the start), turn it as tests/vm/gpio.sh does, then the same checks as
-        # below from "saved".
-        say "SKIP service-state: ${chips[*]} present, but the knob state check on a real chip is not written yet (tests/vm/service.sh)"
+    if [ $svc_real_chip -eq 0 ] && [ -e "${chips[0]}" ]; then
+        say "SKIP service-state: ${chips[*]} present but not the gpio test's gpio-sim chip: no knob to turn"
         return 0
     fi
-    # No chip: the mock backend's switch on line 22 (svc_configure) sets overlay.rain.
-    local inv saved state=/var/lib/puddle/state.toml
+    # The switch (svc_configure) sets overlay.rain: on the gpio-sim chip the contact closes (pull-down on
+    # an active-low line with puddle's pull-up), on the mock backend line 22 goes to 1.
+    local inv saved state=/var/lib/puddle/state.toml knob="a switch (mock GPIO)"
     inv=$(svc_show InvocationID)
     saved=$(svc_count_lines "$inv" "state: knob values saved to $state")
-    echo "gpiochip0 22 1" >>"$svc_knobs"
+    if [ $svc_real_chip -eq 1 ]; then
+        knob="a switch on GPIO27 of gpio-sim's /dev/$gpio_chip (group $(stat -c %G "/dev/$gpio_chip"), mode $(stat -c %a "/dev/$gpio_chip"))"
+        gpio_pull 27 down
+    else
+        echo "gpiochip0 22 1" >>"$svc_knobs"
+    fi
     if ! svc_wait_line "$inv" "state: knob values saved to $state" 60 "$saved" >/dev/null; then
-        say "FAIL service-state: no 'state: knob values saved to $state' within 60 s of the switch (mock GPIO): $(journalctl -o cat "_SYSTEMD_INVOCATION_ID=$inv" -p warning -n 1)"
+        say "FAIL service-state: no 'state: knob values saved to $state' within 60 s of $knob: $(journalctl -o cat "_SYSTEMD_INVOCATION_ID=$inv" -p warning -n 1)"
         return 1
     fi
     if [ "$(stat -c %U "$state")" != puddle ] || ! grep -q 'rain.*true' "$state"; then
@@ -325,7 +337,7 @@ svc_state() {
     elif ! restored=$(svc_wait_line "$inv" "state: 1 knob value(s) restored from $state" 30); then
         say "FAIL service-state: the restarted process did not restore the knob value from $state"
     else
-        say "PASS service-state: a switch (mock GPIO) set overlay.rain, saved by the service in $state (owner puddle); after systemctl restart: '$restored'"
+        say "PASS service-state: $knob set overlay.rain, saved by the service in $state (owner puddle); after systemctl restart: '$restored'"
     fi
 }
 
