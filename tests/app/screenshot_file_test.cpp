@@ -43,7 +43,8 @@ TEST(ScreenshotFile, AJpgNameGetsAJpegOfTheSamePictureAsThePng) {
     // (alpha included, no pixel off by more than 44); the sky turned by 1.5 rad differs by 23, so "the
     // same frame" is checked.
     const std::string other = (dir / "other.png").string();
-    const CommandResult c = run_puddle("-b headless --size 96x54 --frames 20 --seed 3 --set environment.rotation=1.5 --screenshot " + other);
+    const CommandResult c = run_puddle(
+        "-b headless --size 96x54 --frames 20 --seed 3 --set environment.rotation=1.5 --screenshot " + other);
     ASSERT_EQ(c.exit_code, 0) << c.output;
     auto io = assets::read_image(other);
     ASSERT_TRUE(io.ok());
