@@ -120,9 +120,13 @@ svc_configure() {
         svc_set ground checkerboard true || return 1
     local gpio=""
     if [ -d /sys/kernel/config/gpio-sim/puddle ] && declare -F gpio_sim_live >/dev/null && gpio_sim_live 1; then
-        gpio_pull 27 up  # the contact open
-        printf '\n[[knob]]\nkind = "switch"\nchip = "%s"\nline = "GPIO27"\nbias = "pull-up"\nactive_low = true\nparam = "overlay.rain"\n' \
-            "$gpio_label" >>/etc/puddle/puddle.toml
+        local n
+        for n in 17 18 22 27; do gpio_pull $n up; done  # the contacts open
+        {
+            printf '\n[[knob]]\nkind = "switch"\nchip = "%s"\nline = "GPIO27"\nbias = "pull-up"\nactive_low = true\nparam = "overlay.rain"\n' "$gpio_label"
+            printf '\n[[knob]]\nkind = "encoder"\nchip = "%s"\na = "GPIO17"\nb = "GPIO18"\nbias = "pull-up"\nactive_low = true\nparam = "look.vignette"\nstep = 0.2\nacceleration = 0\n' "$gpio_label"
+            printf '\n[[knob]]\nkind = "button"\nchip = "%s"\nline = "GPIO22"\nbias = "pull-up"\nactive_low = true\naction = "next-preset"\n' "$gpio_label"
+        } >>/etc/puddle/puddle.toml
         svc_real_chip=1
     elif ! ls /dev/gpiochip* >/dev/null 2>&1; then
         printf '\n[[knob]]\nkind = "switch"\nline = 22\nparam = "overlay.rain"\n' >>/etc/puddle/puddle.toml
@@ -341,6 +345,28 @@ svc_state() {
     fi
 }
 
+# The encoder and the button on the real chip, turned while the service runs as its own user: the
+# parameter changes and the preset steps, as the journal of this invocation says.
+svc_gpio_knobs() {
+    if [ $svc_real_chip -eq 0 ]; then
+        say "SKIP service-gpio: no gpio-sim chip (the gpio test makes it: --tests \"gpio service\")"
+        return 0
+    fi
+    local inv turned pressed
+    inv=$(svc_show InvocationID)
+    gpio_turn cw 2
+    if ! turned=$(svc_wait_line "$inv" "*look.vignette * -> *" 120); then
+        say "FAIL service-gpio: 2 detents of the encoder on GPIO17/GPIO18 changed nothing in 120 s"
+        return 1
+    fi
+    gpio_pull 22 down; sleep 0.3; gpio_pull 22 up
+    if ! pressed=$(svc_wait_line "$inv" "*preset: * (knob)*" 120); then
+        say "FAIL service-gpio: pressing GPIO22 stepped no preset in 120 s"
+        return 1
+    fi
+    say "PASS service-gpio: as user puddle on /dev/$gpio_chip: the encoder '$turned', the button '$pressed'"
+}
+
 svc_stop() {
     local rc
     systemctl stop "$svc"
@@ -406,6 +432,7 @@ service_test() {
     svc_watchdog
     svc_reload
     svc_state
+    svc_gpio_knobs
     svc_stop
     svc_purge
 }
