@@ -175,7 +175,7 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
     if (t.gpio && !t.knobs.empty()) {
         t.gpio->poll(now);
         t.actions.clear();
-        for (io::Knob& k : t.knobs) k.update(*t.gpio, now, t.actions);
+        for (io::Knob& k : t.knobs) k.update(*t.gpio, now, t.actions, t.gone_chips);
         for (const io::KnobAction& a : t.actions) apply_action(t, a, params, now);
         t.actions.clear();
     }

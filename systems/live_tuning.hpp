@@ -38,6 +38,7 @@ struct LiveTuning {
     bool reload_requested = false;  // set by SIGHUP
     std::unique_ptr<io::GpioBackend> gpio;
     std::vector<io::Knob> knobs;
+    io::GoneChips gone_chips;  // an unplugged chip is one warning for all its knobs
     std::vector<io::KnobAction> actions;
     std::optional<params::StateStore> state;
     bool state_dirty = false;

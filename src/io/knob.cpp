@@ -11,6 +11,14 @@ namespace {
 constexpr std::size_t max_events = 64;  // per line per frame; the kernel keeps 16 by default anyway
 }  // namespace
 
+bool GoneChips::first_to_find_gone(const std::string& chip) {
+    if (std::find(chips_.begin(), chips_.end(), chip) != chips_.end()) return false;
+    chips_.push_back(chip);
+    return true;
+}
+
+void GoneChips::back(const std::string& chip) { std::erase(chips_, chip); }
+
 Knob::Knob(params::KnobSpec spec) : spec_(std::move(spec)), debouncer_(spec_.debounce_ms * 1e-3, false) {
     events_a_.resize(max_events);
     events_b_.resize(max_events);
@@ -21,7 +29,7 @@ void Knob::close_lines() {
     line_b_.reset();
 }
 
-bool Knob::try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out) {
+bool Knob::try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out, GoneChips& gone) {
     if (now < next_try_) return false;
     next_try_ = now + retry_seconds;
     LineRequest request{spec_.chip, spec_.line, spec_.active_low, spec_.bias};
@@ -42,6 +50,7 @@ bool Knob::try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out)
         return false;
     }
     unplugged_ = false;
+    gone.back(spec_.chip);
     line_a_ = std::move(*a);
     line_b_ = std::move(*b);
     if (!last_warning_.empty()) spdlog::info("gpio: knob {} works now", spec_.describe());
@@ -78,13 +87,17 @@ void Knob::turn(int detent, double time, std::vector<KnobAction>& out) {
     out.push_back({KnobAction::Kind::Turn, &spec_, detent * spec_.step * gain, false});
 }
 
-void Knob::update(GpioBackend& gpio, double now, std::vector<KnobAction>& out) {
-    if (!line_a_ && !try_open(gpio, now, out)) return;
+void Knob::update(GpioBackend& gpio, double now, std::vector<KnobAction>& out, GoneChips& gone) {
+    if (!line_a_ && !try_open(gpio, now, out, gone)) return;
     auto na = line_a_->read_events(events_a_);
     auto nb = line_b_ ? line_b_->read_events(events_b_) : Result<std::size_t>(std::size_t{0});
     if (!na || !nb) {
-        spdlog::warn("{} (knob: {}); retrying every {:g} s", (!na ? na.error() : nb.error()).message,
-                     spec_.describe(), retry_seconds);
+        const std::string& message = (!na ? na.error() : nb.error()).message;
+        if (gone.first_to_find_gone(spec_.chip))
+            spdlog::warn("{} (knob: {}); chip {} and every knob on it: retrying every {:g} s", message,
+                         spec_.describe(), spec_.chip, retry_seconds);
+        else
+            spdlog::debug("{} (knob: {}); its chip's loss was already warned about", message, spec_.describe());
         last_warning_ = "gone";
         unplugged_ = true;
         close_lines();

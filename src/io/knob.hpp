@@ -1,7 +1,8 @@
 #pragma once
 // A knob at run time: its GPIO lines, its decoder or debouncer, and what it asks for. Opening fails
 // softly: one warning naming the chip, the line and the fix, then a retry every few seconds, so a
-// late USB GPIO expander or a fixed permission starts working without a restart.
+// late USB GPIO expander or a fixed permission starts working without a restart. A chip unplugged while
+// its knobs run is one warning for all of them (GoneChips).
 
 #include <memory>
 #include <span>
@@ -23,6 +24,19 @@ struct KnobAction {
     bool level = false;  // Level: the switch's position
 };
 
+// The chips whose loss has been warned about: the knobs on one unplugged chip give one warning between
+// them, not one each. A chip leaves the list when one of its knobs opens again, so a second unplug warns
+// again. Owned by whoever updates the knobs (systems/live_tuning.cpp); it grows only on an unplug.
+class GoneChips {
+public:
+    // True for the first knob to find `chip` gone, false for the others until it is back.
+    bool first_to_find_gone(const std::string& chip);
+    void back(const std::string& chip);
+
+private:
+    std::vector<std::string> chips_;
+};
+
 class Knob {
 public:
     static constexpr double retry_seconds = 3.0;
@@ -32,11 +46,12 @@ public:
     bool open() const { return line_a_ != nullptr; }
 
     // Opens the lines when closed (at most every retry_seconds), reads their edges without blocking,
-    // and appends the resulting actions. `out` must have capacity reserved: nothing allocates here.
-    void update(GpioBackend& gpio, double now, std::vector<KnobAction>& out);
+    // and appends the resulting actions. `out` must have capacity reserved: nothing allocates here but
+    // an unplug's entry in `gone`, shared by every knob that is updated together.
+    void update(GpioBackend& gpio, double now, std::vector<KnobAction>& out, GoneChips& gone);
 
 private:
-    bool try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out);
+    bool try_open(GpioBackend& gpio, double now, std::vector<KnobAction>& out, GoneChips& gone);
     void close_lines();
     void turn(int detent, double time, std::vector<KnobAction>& out);
 
