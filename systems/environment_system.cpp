@@ -41,6 +41,22 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
                                        .wrap = gpu::Wrap::Repeat,
                                        .anisotropy = procedural ? 1.0f : 8.0f});
     g.requested_image = path;
+    g.made = true;
+    ground = std::move(g);
+    return {};
+}
+
+Result<void> placeholder_ground(gpu::Device& device, Ground& ground) {
+    Ground g;
+    g.source = "none made (the checkerboard shows; the paving or ground.image is made when "
+               "ground.checkerboard turns false)";
+    auto texture = device.create_texture(
+        {.label = "ground placeholder", .format = gpu::TextureFormat::SRGB8_A8, .width = 1, .height = 1});
+    if (!texture) return texture.error();
+    g.texture = std::move(texture).value();
+    const std::uint8_t grey[4] = {128, 128, 128, 255};
+    g.texture.upload(std::as_bytes(std::span(grey)));
+    g.sampler = device.create_sampler({.label = "ground placeholder"});
     ground = std::move(g);
     return {};
 }
@@ -124,6 +140,7 @@ Result<PreparedGround> prepare_ground(const std::string& path, int max_texture_s
 }
 
 Result<void> load_ground(gpu::Device& device, const params::Params& params, Ground& ground) {
+    if (params.get<ParamId::ground_checkerboard>()) return placeholder_ground(device, ground);
     const std::string& path = params.get<ParamId::ground_image>();
     auto prepared = prepare_ground(path, device.caps().max_texture_size);
     if (!prepared) return prepared.error();
@@ -137,19 +154,22 @@ void environment_reload_system(gpu::Device& device, const params::Params& params
         start_environment_reload(device, params, env, reload);
     continue_environment_reload(device, env, reload);
 
-    if (params.get<ParamId::ground_image>() != ground.requested_image) {
+    // A ground is asked for only while it shows (Ground): a new ground.image under the checkerboard waits.
+    const bool shown = !params.get<ParamId::ground_checkerboard>();
+    if (shown && ground.requested_image != params.get<ParamId::ground_image>()) {
         ground.requested_image = params.get<ParamId::ground_image>();
         const int max_size = device.caps().max_texture_size;
-        reload.ground.submit([path = ground.requested_image, max_size](std::stop_token) {
+        reload.ground.submit([path = *ground.requested_image, max_size](std::stop_token) {
             return prepare_ground(path, max_size);
         });
     }
     if (auto prepared = reload.ground.take()) {
+        const std::string keeping = ground.made ? ground.source : "the checkerboard";
         if (!*prepared)
-            spdlog::error("{} (keeping {})", prepared->error().message, ground.source);
-        else if (auto r = upload_ground(device, std::move(prepared->value()), ground.requested_image, ground);
+            spdlog::error("{} (keeping {})", prepared->error().message, keeping);
+        else if (auto r = upload_ground(device, std::move(prepared->value()), *ground.requested_image, ground);
                  !r)
-            spdlog::error("{} (keeping {})", r.error().message, ground.source);
+            spdlog::error("{} (keeping {})", r.error().message, keeping);
     }
 }
 

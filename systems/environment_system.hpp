@@ -38,11 +38,17 @@ struct Environment {
 };
 
 // Resource.
+// Made only when it shows: while ground.checkerboard has been on since the start, `texture` is a 1x1
+// placeholder and nothing is read or generated (on a slow board the paving took seconds at every start);
+// turning the checkerboard off makes it on the worker, and the checkerboard shows until it is ready.
 struct Ground {
     gpu::Texture texture;
     gpu::Sampler sampler;
     std::string source;
-    std::string requested_image;
+    // The ground.image last asked for (empty: the procedural paving), loaded or not; none while no ground
+    // has been asked for.
+    std::optional<std::string> requested_image;
+    bool made = false;  // `texture` holds a ground (else the placeholder)
 };
 
 // The ground's CPU half: the image read, as sRGB, halved until the GPU takes it.

@@ -53,8 +53,11 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
                    const render::PuddleVariant* variant) {
     const gpu::FrameTarget& frame = target.target;
     const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
-    const render::BuiltPipeline* pipeline =
-        renderer.pipeline(device, variant ? *variant : render::choose_puddle_variant(params, rgbm));
+    render::PuddleVariant chosen = variant ? *variant : render::choose_puddle_variant(params, rgbm);
+    // The checkerboard shows until a ground just asked for is made (Ground).
+    if (!variant && chosen.ground == render::GroundKind::Image && !ground.made)
+        chosen.ground = render::GroundKind::Checkerboard;
+    const render::BuiltPipeline* pipeline = renderer.pipeline(device, chosen);
     if (!pipeline) return;
 
     // Everything uniform across the screen is worked out here once, not per pixel. The camera is the whole

@@ -14,6 +14,7 @@
 #include "params/config_loader.hpp"
 #include "render/equirect_to_cube.hpp"
 #include "support/gpu_fixture.hpp"
+#include "support/log_lines.hpp"
 #include "support/test_support.hpp"
 #include "systems/environment_test_support.hpp"
 #include "systems/render_test_support.hpp"
@@ -164,6 +165,50 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     set(ParamId::environment_face_size, 12);
     (void)render_until_reloaded(*engine);
     EXPECT_EQ(engine->world().resource<systems::Environment>().cube.width(), 12);
+}
+
+// Under the checkerboard no ground is read or generated (a slow board spent seconds on the paving at every
+// start); turning the checkerboard off makes it on the worker, and then the picture is the one a start
+// with the paving gives. A ground.image asked for under the checkerboard is read only then.
+TEST(EnvironmentSystem, TheGroundIsMadeOnlyWhenItShows) {
+    auto engine = make_engine(
+        make_params({"rain.intensity=0", "water.turbidity=0.05", "ground.checkerboard=true"}), {96, 54});
+    ASSERT_TRUE(engine);
+    const auto& ground = engine->world().resource<systems::Ground>();
+    EXPECT_FALSE(ground.made);
+    EXPECT_FALSE(ground.requested_image.has_value());
+    EXPECT_NE(ground.source.find("the checkerboard shows"), std::string::npos) << ground.source;
+    const assets::Image checkerboard = render_frames(*engine, 2);
+
+    auto& params = engine->params();
+    // As --set: make_params set the checkerboard at that precedence.
+    auto set = [&](ParamId id, params::ParamValue v) {
+        ASSERT_TRUE(params.set(id, std::move(v), ParamSource::CommandLine));
+    };
+    test::LogLines errors(spdlog::level::err);
+    set(ParamId::ground_image, std::string("/nonexistent/stones.jpg"));
+    (void)render_until_reloaded(*engine);
+    EXPECT_FALSE(ground.requested_image.has_value()) << "not read while the checkerboard shows";
+    EXPECT_EQ(errors.count("ground"), 0);
+
+    set(ParamId::ground_checkerboard, false);
+    const assets::Image still = render_until_reloaded(*engine);
+    EXPECT_EQ(errors.count("(keeping the checkerboard)"), 1);
+    EXPECT_FALSE(ground.made);
+    EXPECT_EQ(compare_images(checkerboard, still, 0).max_channel_diff, 0) << "a bad image keeps the checkerboard";
+
+    set(ParamId::ground_image, std::string());
+    const assets::Image paving = render_until_reloaded(*engine);
+    EXPECT_TRUE(ground.made);
+    EXPECT_EQ(ground.source, "procedural cobblestones");
+    EXPECT_GT(compare_images(checkerboard, paving, 8).mean_abs_diff, 2.0);
+
+    auto started_with_paving = make_engine(
+        make_params({"rain.intensity=0", "water.turbidity=0.05", "ground.checkerboard=false"}), {96, 54});
+    ASSERT_TRUE(started_with_paving);
+    EXPECT_TRUE(started_with_paving->world().resource<systems::Ground>().made);
+    const ImageDiff same = compare_images(render_frames(*started_with_paving, 2), paving, 1);
+    EXPECT_LE(same.max_channel_diff, 1);
 }
 
 // A panorama reloaded at run time is converted with the shader the first one compiled (the pipeline stays in
