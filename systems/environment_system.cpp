@@ -48,8 +48,9 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
 
 Result<void> placeholder_ground(gpu::Device& device, Ground& ground) {
     Ground g;
-    g.source = "none made (the checkerboard shows; the paving or ground.image is made when "
-               "ground.checkerboard turns false)";
+    g.source =
+        "none made (the checkerboard shows; the paving or ground.image is made when "
+        "ground.checkerboard turns false)";
     auto texture = device.create_texture(
         {.label = "ground placeholder", .format = gpu::TextureFormat::SRGB8_A8, .width = 1, .height = 1});
     if (!texture) return texture.error();
@@ -167,7 +168,8 @@ void environment_reload_system(gpu::Device& device, const params::Params& params
         const std::string keeping = ground.made ? ground.source : "the checkerboard";
         if (!*prepared)
             spdlog::error("{} (keeping {})", prepared->error().message, keeping);
-        else if (auto r = upload_ground(device, std::move(prepared->value()), *ground.requested_image, ground);
+        else if (auto r =
+                     upload_ground(device, std::move(prepared->value()), *ground.requested_image, ground);
                  !r)
             spdlog::error("{} (keeping {})", r.error().message, keeping);
     }

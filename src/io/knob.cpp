@@ -17,7 +17,9 @@ bool GoneChips::first_to_find_gone(const std::string& chip) {
     return true;
 }
 
-void GoneChips::back(const std::string& chip) { std::erase(chips_, chip); }
+void GoneChips::back(const std::string& chip) {
+    std::erase(chips_, chip);
+}
 
 Knob::Knob(params::KnobSpec spec) : spec_(std::move(spec)), debouncer_(spec_.debounce_ms * 1e-3, false) {
     events_a_.resize(max_events);
@@ -97,7 +99,8 @@ void Knob::update(GpioBackend& gpio, double now, std::vector<KnobAction>& out, G
             spdlog::warn("{} (knob: {}); chip {} and every knob on it: retrying every {:g} s", message,
                          spec_.describe(), spec_.chip, retry_seconds);
         else
-            spdlog::debug("{} (knob: {}); its chip's loss was already warned about", message, spec_.describe());
+            spdlog::debug("{} (knob: {}); its chip's loss was already warned about", message,
+                          spec_.describe());
         last_warning_ = "gone";
         unplugged_ = true;
         close_lines();

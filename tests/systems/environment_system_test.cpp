@@ -195,7 +195,8 @@ TEST(EnvironmentSystem, TheGroundIsMadeOnlyWhenItShows) {
     const assets::Image still = render_until_reloaded(*engine);
     EXPECT_EQ(errors.count("(keeping the checkerboard)"), 1);
     EXPECT_FALSE(ground.made);
-    EXPECT_EQ(compare_images(checkerboard, still, 0).max_channel_diff, 0) << "a bad image keeps the checkerboard";
+    EXPECT_EQ(compare_images(checkerboard, still, 0).max_channel_diff, 0)
+        << "a bad image keeps the checkerboard";
 
     set(ParamId::ground_image, std::string());
     const assets::Image paving = render_until_reloaded(*engine);
