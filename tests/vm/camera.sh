@@ -9,7 +9,8 @@
 camera_puddle_test() {
     local diff_tool log pid rc i
     diff_tool="$(dirname "$VM_PUDDLE")/tests/puddle-image-diff"
-    local common=(--backend headless --size 160x90 --seed "$VM_SEED" --frames 8 --set wave.resolution=128)
+    # shellcheck disable=SC2206  # VM_PUDDLE_SETS: the run's --set list (tests/vm/run), split on purpose
+    local common=(--backend headless --size 160x90 --seed "$VM_SEED" --frames 8 $VM_PUDDLE_SETS)
     local cam=(--set environment.source=camera --set environment.camera_device=/dev/video0
                --set environment.camera_width="$VM_W" --set environment.camera_height="$VM_H")
 
@@ -28,7 +29,8 @@ camera_puddle_test() {
 
     # Unplug mid-run.
     log=$out/camera-unplug.log
-    "$VM_PUDDLE" --backend headless --size 160x90 --frames 0 --set wave.resolution=128 "${cam[@]}" >"$log" 2>&1 &
+    # shellcheck disable=SC2086
+    "$VM_PUDDLE" --backend headless --size 160x90 --frames 0 $VM_PUDDLE_SETS "${cam[@]}" >"$log" 2>&1 &
     pid=$!
     for i in $(seq 1 600); do grep -q "camera: streaming" "$log" && break; sleep 0.1; done
     if ! grep -q "camera: streaming" "$log"; then
