@@ -37,8 +37,8 @@ struct Environment {
     int requested_face_size = 0;
 };
 
-// Resource. Made only when it shows: while ground.checkerboard has been on since the start, `texture` is a 1x1
-// placeholder and nothing is read or generated (on a slow board the paving took seconds at every start);
+// Resource. Made only when it shows: while ground.checkerboard has been on since the start, `texture` is a
+// 1x1 placeholder and nothing is read or generated (on a slow board the paving took seconds at every start);
 // turning the checkerboard off makes it on the worker, and the checkerboard shows until it is ready.
 struct Ground {
     gpu::Texture texture;
