@@ -12,8 +12,16 @@ namespace puddle::bench {
 
 namespace {
 
-// Keeps the lines that the #ifdef/#ifndef/#if defined/#else/#endif around them let through, with the
-// macros #define'd so far; drops every directive and comment.
+// Whether `#if` / `#elif` `expression` holds: only `defined(X)` and `!defined(X)`; anything else passes.
+bool condition_holds(const std::string& expression, const std::set<std::string>& defined) {
+    const bool negated = expression.starts_with("!");
+    const auto open = expression.find('('), close = expression.find(')');
+    if (open == std::string::npos || close == std::string::npos) return true;
+    return defined.contains(expression.substr(open + 1, close - open - 1)) != negated;
+}
+
+// Keeps the lines that the #ifdef/#ifndef/#if defined/#elif defined/#else/#endif around them let through,
+// with the macros #define'd so far; drops every directive and comment.
 std::string preprocess(std::string_view source) {
     std::string text;  // comments out first
     for (std::size_t i = 0; i < source.size(); ++i) {
@@ -29,7 +37,8 @@ std::string preprocess(std::string_view source) {
         }
     }
     std::set<std::string> defined;
-    std::vector<bool> live{true};  // one entry per open #if; the last says whether lines pass
+    std::vector<bool> live{true};   // one entry per open #if; the last says whether lines pass
+    std::vector<bool> taken{true};  // whether a branch of that #if has passed (an #elif or #else then cannot)
     std::istringstream in(text);
     std::string line, out;
     while (std::getline(in, line)) {
@@ -45,20 +54,20 @@ std::string preprocess(std::string_view source) {
         if (directive == "define" && live.back()) {
             defined.insert(name);
         } else if (directive == "ifdef" || directive == "ifndef" || directive == "if") {
-            bool on = true;
-            if (directive == "if") {  // only `defined(X)` and `!defined(X)`; anything else passes
-                const bool negated = name.starts_with("!");
-                const auto open = name.find('('), close = name.find(')');
-                if (open != std::string::npos && close != std::string::npos)
-                    on = defined.contains(name.substr(open + 1, close - open - 1)) != negated;
-            } else {
-                on = defined.contains(name) == (directive == "ifdef");
-            }
+            const bool on = directive == "if" ? condition_holds(name, defined)
+                                              : defined.contains(name) == (directive == "ifdef");
             live.push_back(live.back() && on);
+            taken.push_back(on);
+        } else if (directive == "elif" && live.size() > 1) {
+            const bool on = !taken.back() && condition_holds(name, defined);
+            live.back() = outer && on;
+            taken.back() = taken.back() || on;
         } else if (directive == "else" && live.size() > 1) {
-            live.back() = outer && !live.back();
+            live.back() = outer && !taken.back();
+            taken.back() = true;
         } else if (directive == "endif" && live.size() > 1) {
             live.pop_back();
+            taken.pop_back();
         }
     }
     return out;

@@ -54,6 +54,29 @@ TEST(ShaderCost, FollowsTheVariantsDefines) {
     EXPECT_EQ(estimate_shader_cost(source).texture_fetches, 1);
 }
 
+// #if defined / #elif defined / #else: exactly one branch counts, the first whose condition holds.
+TEST(ShaderCost, FollowsElifChains) {
+    const auto fetches = [](const std::string& define) {
+        return estimate_shader_cost(define + R"(
+            uniform sampler2D u_a;
+            void main() {
+            #if defined(ONE)
+                o = texture(u_a, p);
+            #elif defined(TWO)
+                o = texture(u_a, p) + texture(u_a, q);
+            #elif defined(ONE)
+                o = texture(u_a, p) + texture(u_a, q) + texture(u_a, r) + texture(u_a, s);
+            #else
+                o = texture(u_a, p) + texture(u_a, q) + texture(u_a, r);
+            #endif
+            })")
+            .texture_fetches;
+    };
+    EXPECT_EQ(fetches("#define ONE\n"), 1);
+    EXPECT_EQ(fetches("#define TWO\n"), 2);
+    EXPECT_EQ(fetches(""), 3);
+}
+
 // The variant the default parameters select: the paving (an image ground), no RGBM, the soft tone curve.
 TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     render::PuddleVariant v = render::choose_puddle_variant(params::Params{}, false);
