@@ -8,7 +8,8 @@
 // branch its neighbours disagree on, and llvmpipe runs both sides of every branch.
 //   METHOD_RAYMARCH: the reference's sphere-trace of the displaced box (render.march_steps reads);
 //                    otherwise meet the flat top analytically and refine once (1 read).
-//   GROUND_IMAGE:    the ground is u_ground (an image or the procedural paving); otherwise the checkerboard.
+//   GROUND_PAVING:   the procedural setts, drawn here; GROUND_IMAGE: the ground is u_ground (ground.image);
+//                    neither: the checkerboard.
 //   GROUND_HIDDEN:   turbidity is so high that no ground can show through: no refraction at all.
 //   ENV_RGBM:        the cube holds RGBM texels (no half-float render targets).
 //   TONEMAP:         the look.tonemap operator, a TONEMAP_* constant of colour.glsl.
@@ -117,15 +118,35 @@ bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
 }
 #endif
 
-#ifdef GROUND_IMAGE
-vec3 ground_colour(vec2 xz) { return texture(u_ground, xz * u_ground_scale).rgb * 0.6; }
-#else
 float hash12(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
     p3 += dot(p3, p3.yzx + 33.33);
     return fract((p3.x + p3.y) * p3.z);
 }
 
+#if defined(GROUND_IMAGE)
+vec3 ground_colour(vec2 xz) { return texture(u_ground, xz * u_ground_scale).rgb * 0.6; }
+#elif defined(GROUND_PAVING)
+// Wet granite setts in running bond: 4 stones across and 6 rows along each ground.scale tile, every row
+// shifted half a stone (and a little more, hashed), each stone its own shade, slightly domed, with dark
+// joints. Drawn here, not read from a texture: on llvmpipe one filtered read cost a fifth of the frame,
+// this costs about what the checkerboard does. The joints widen by the pixel's footprint (fwidth) and a
+// stone smaller than a few pixels fades to the pattern's mean, so far rows do not shimmer.
+vec3 ground_colour(vec2 xz) {
+    vec2 q = xz * u_ground_scale * vec2(4.0, 6.0);  // in stones
+    float row = floor(q.y);
+    q.x += 0.5 * row + 0.13 * hash12(vec2(row, 7.0));
+    vec2 stone_id = floor(q);
+    vec2 edge = 0.5 - abs(fract(q) - 0.5);  // to the stone's nearest side, per axis: 0 at a joint
+    vec2 footprint = fwidth(q);
+    vec2 joint = smoothstep(0.04 - footprint, 0.04 + footprint, edge);
+    vec2 dome = 0.8 + 0.2 * smoothstep(0.0, 0.3, edge);
+    float stone = joint.x * joint.y * dome.x * dome.y * (0.6 + 0.4 * hash12(stone_id));
+    stone = mix(stone, 0.6, smoothstep(0.2, 0.5, max(footprint.x, footprint.y)));  // 0.6: the mean
+    vec3 srgb = (vec3(40.0, 36.0, 32.0) + vec3(120.0, 110.0, 100.0) * stone) / 255.0;
+    return srgb * srgb * 0.6;  // squared: near enough to sRGB's decoding for a made-up stone
+}
+#else
 vec3 ground_colour(vec2 xz) {
     vec2 tile = floor(xz * u_ground_scale);
     float light = mod(tile.x + tile.y, 2.0);  // 0 or 1

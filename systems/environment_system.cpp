@@ -6,7 +6,6 @@
 #include <span>
 
 #include "assets/image_io.hpp"
-#include "assets/procedural_ground.hpp"
 
 namespace puddle::systems {
 
@@ -29,28 +28,25 @@ Result<void> upload_ground(gpu::Device& device, PreparedGround prepared, const s
     g.texture = std::move(texture).value();
     g.texture.upload(std::as_bytes(std::span(image.data)));
     g.texture.generate_mipmaps();
-    // Trilinear. An image is also anisotropic (where the GPU has it): tiled paving at grazing angles does
-    // not shimmer. The procedural paving, the default ground, is not: seen from the default camera through
-    // rippled water the anisotropy does not show, and on llvmpipe it made the whole 1080p frame 2.6 times
-    // dearer. Bilinear from the nearest mip level (GL_LINEAR_MIPMAP_NEAREST) was cheaper still, but with it
-    // Mesa 22.3's llvmpipe crashed in its shader code in the VM test when a camera was unplugged while
-    // streaming (4 runs of 4; trilinear: none), so it is not used.
-    const bool procedural = path.empty();
-    g.sampler = device.create_sampler({.label = "ground",
-                                       .mipmaps = true,
-                                       .wrap = gpu::Wrap::Repeat,
-                                       .anisotropy = procedural ? 1.0f : 8.0f});
+    // Trilinear and anisotropic (where the GPU has it): a tiled image at grazing angles does not shimmer.
+    g.sampler = device.create_sampler(
+        {.label = "ground", .mipmaps = true, .wrap = gpu::Wrap::Repeat, .anisotropy = 8.0f});
     g.requested_image = path;
     g.made = true;
     ground = std::move(g);
     return {};
 }
 
-Result<void> placeholder_ground(gpu::Device& device, Ground& ground) {
+// What shows while no image is: the checkerboard or the paving, both drawn by the shader.
+std::string drawn_ground(const params::Params& params) {
+    if (!params.get<ParamId::ground_checkerboard>()) return "procedural setts (drawn by the shader)";
+    if (params.get<ParamId::ground_image>().empty()) return "checkerboard";
+    return "checkerboard (ground.image is read when ground.checkerboard turns false)";
+}
+
+Result<void> placeholder_ground(gpu::Device& device, const params::Params& params, Ground& ground) {
     Ground g;
-    g.source =
-        "none made (the checkerboard shows; the paving or ground.image is made when "
-        "ground.checkerboard turns false)";
+    g.source = drawn_ground(params);
     auto texture = device.create_texture(
         {.label = "ground placeholder", .format = gpu::TextureFormat::SRGB8_A8, .width = 1, .height = 1});
     if (!texture) return texture.error();
@@ -126,23 +122,19 @@ Result<void> load_environment(gpu::Device& device, const params::Params& params,
 
 Result<PreparedGround> prepare_ground(const std::string& path, int max_texture_size) {
     PreparedGround g;
-    if (path.empty()) {
-        g.image = assets::cobblestone_ground(512);
-        g.source = "procedural cobblestones";
-    } else {
-        // An HDR file is stored as sRGB like any other: the ground is lit, never a light.
-        auto loaded = assets::read_color_image(path);
-        if (!loaded) return loaded.error();
-        g.image = assets::to_srgb8(*loaded);
-        g.source = path;
-    }
+    // An HDR file is stored as sRGB like any other: the ground is lit, never a light.
+    auto loaded = assets::read_color_image(path);
+    if (!loaded) return loaded.error();
+    g.image = assets::to_srgb8(*loaded);
+    g.source = path;
     while (std::max(g.image.width, g.image.height) > max_texture_size) g.image = assets::halve(g.image);
     return g;
 }
 
 Result<void> load_ground(gpu::Device& device, const params::Params& params, Ground& ground) {
-    if (params.get<ParamId::ground_checkerboard>()) return placeholder_ground(device, ground);
     const std::string& path = params.get<ParamId::ground_image>();
+    if (params.get<ParamId::ground_checkerboard>() || path.empty())
+        return placeholder_ground(device, params, ground);
     auto prepared = prepare_ground(path, device.caps().max_texture_size);
     if (!prepared) return prepared.error();
     return upload_ground(device, std::move(prepared).value(), path, ground);
@@ -155,17 +147,25 @@ void environment_reload_system(gpu::Device& device, const params::Params& params
         start_environment_reload(device, params, env, reload);
     continue_environment_reload(device, env, reload);
 
-    // A ground is asked for only while it shows (Ground): a new ground.image under the checkerboard waits.
-    const bool shown = !params.get<ParamId::ground_checkerboard>();
-    if (shown && ground.requested_image != params.get<ParamId::ground_image>()) {
-        ground.requested_image = params.get<ParamId::ground_image>();
+    // An image is asked for only while it shows (Ground): a new ground.image under the checkerboard waits.
+    // One taken away is forgotten, so asking for the same file again reads it again (it may be fixed now).
+    const std::string& path = params.get<ParamId::ground_image>();
+    if (path.empty() && ground.requested_image) {
+        ground.requested_image.reset();
+        if (ground.made)  // frees the image's memory
+            if (auto r = placeholder_ground(device, params, ground); !r)
+                spdlog::error("{}", r.error().message);
+    }
+    const bool shown = !params.get<ParamId::ground_checkerboard>() && !path.empty();
+    if (shown && ground.requested_image != path) {
+        ground.requested_image = path;
         const int max_size = device.caps().max_texture_size;
         reload.ground.submit([path = *ground.requested_image, max_size](std::stop_token) {
             return prepare_ground(path, max_size);
         });
     }
-    if (auto prepared = reload.ground.take()) {
-        const std::string keeping = ground.made ? ground.source : "the checkerboard";
+    if (auto prepared = reload.ground.take(); prepared && ground.requested_image) {  // else taken away
+        const std::string keeping = ground.made ? ground.source : "the procedural setts";
         if (!*prepared)
             spdlog::error("{} (keeping {})", prepared->error().message, keeping);
         else if (auto r =

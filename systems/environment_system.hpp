@@ -37,20 +37,21 @@ struct Environment {
     int requested_face_size = 0;
 };
 
-// Resource. Made only when it shows: while ground.checkerboard has been on since the start, `texture` is a
-// 1x1 placeholder and nothing is read or generated (on a slow board the paving took seconds at every start);
-// turning the checkerboard off makes it on the worker, and the checkerboard shows until it is ready.
+// Resource: the ground.image texture. The checkerboard and the procedural setts (the default) are drawn by
+// the shader and need none: until an image is asked for and shows (ground.checkerboard false, ground.image
+// set), `texture` is a 1x1 placeholder and nothing is read. A new image is read on the worker; the setts,
+// or the image shown before, stay on screen until it is ready.
 struct Ground {
     gpu::Texture texture;
     gpu::Sampler sampler;
-    std::string source;
-    // The ground.image last asked for (empty: the procedural paving), loaded or not; none while no ground
-    // has been asked for.
+    std::string source;  // what shows, for logs: the image's path, or which ground the shader draws
+    // The ground.image last asked for, loaded or not; none while no image has been asked for since
+    // ground.image was last empty.
     std::optional<std::string> requested_image;
-    bool made = false;  // `texture` holds a ground (else the placeholder)
+    bool made = false;  // `texture` holds an image (else the placeholder)
 };
 
-// The ground's CPU half: the image read, as sRGB, halved until the GPU takes it.
+// The ground's CPU half: the image at `path` (not empty) read, as sRGB, halved until the GPU takes it.
 struct PreparedGround {
     assets::Image image;
     std::string source;

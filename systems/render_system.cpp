@@ -54,9 +54,9 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     const gpu::FrameTarget& frame = target.target;
     const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
     render::PuddleVariant chosen = variant ? *variant : render::choose_puddle_variant(params, rgbm);
-    // The checkerboard shows until a ground just asked for is made (Ground).
+    // The setts show until the first image asked for is made (Ground).
     if (!variant && chosen.ground == render::GroundKind::Image && !ground.made)
-        chosen.ground = render::GroundKind::Checkerboard;
+        chosen.ground = render::GroundKind::Paving;
     const render::BuiltPipeline* pipeline = renderer.pipeline(device, chosen);
     if (!pipeline) return;
 

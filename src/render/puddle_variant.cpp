@@ -13,7 +13,7 @@ using params::ParamId;
 
 namespace {
 
-// The brightest ground either kind can show, before the water's filter: an image darkened to 60%.
+// The brightest ground any kind can show, before the water's filter: an image darkened to 60%.
 constexpr float brightest_ground = 0.6f;
 constexpr float hidden_below = 1.0f / 4096.0f;
 // The raymarch bounds the displacement by four times the height scale; the same bound here.
@@ -32,9 +32,10 @@ bool ground_hidden(const params::Params& params) {
 PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm) {
     PuddleVariant v;
     v.raymarch = params.get<ParamId::render_method>() == params::RenderMethod::raymarch;
-    v.ground = ground_hidden(params)                        ? GroundKind::Hidden
-               : params.get<ParamId::ground_checkerboard>() ? GroundKind::Checkerboard
-                                                            : GroundKind::Image;
+    v.ground = ground_hidden(params)                         ? GroundKind::Hidden
+               : params.get<ParamId::ground_checkerboard>()  ? GroundKind::Checkerboard
+               : params.get<ParamId::ground_image>().empty() ? GroundKind::Paving
+                                                             : GroundKind::Image;
     v.env_rgbm = env_rgbm;
     v.tonemap = params.get<ParamId::look_tonemap>();
     return v;
@@ -42,7 +43,7 @@ PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm)
 
 std::size_t variant_index(const PuddleVariant& v) {
     std::size_t i = v.raymarch ? 1 : 0;
-    i = i * 3 + static_cast<std::size_t>(v.ground);
+    i = i * ground_kind_count + static_cast<std::size_t>(v.ground);
     i = i * 2 + (v.env_rgbm ? 1 : 0);
     return i * tonemap_count + static_cast<std::size_t>(v.tonemap);
 }
@@ -51,6 +52,7 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
     std::vector<std::string> d;
     if (surface_unorm) d.emplace_back("SURFACE_UNORM");
     if (v.raymarch) d.emplace_back("METHOD_RAYMARCH");
+    if (v.ground == GroundKind::Paving) d.emplace_back("GROUND_PAVING");
     if (v.ground == GroundKind::Image) d.emplace_back("GROUND_IMAGE");
     if (v.ground == GroundKind::Hidden) d.emplace_back("GROUND_HIDDEN");
     if (v.env_rgbm) d.emplace_back("ENV_RGBM");
@@ -59,7 +61,7 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
 }
 
 std::string describe(const PuddleVariant& v) {
-    static constexpr const char* grounds[] = {"checkerboard", "ground image", "ground hidden"};
+    static constexpr const char* grounds[] = {"checkerboard", "paving", "ground image", "ground hidden"};
     return fmt::format("{}, {}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect",
                        grounds[static_cast<int>(v.ground)], v.env_rgbm ? ", RGBM sky" : "",
                        params::choice_name(v.tonemap));

@@ -14,7 +14,10 @@
 
 namespace puddle::render {
 
-enum class GroundKind { Checkerboard, Image, Hidden };
+// Paving: the procedural wet setts, drawn by the shader (no texture, about the checkerboard's cost);
+// Image: ground.image, a texture.
+enum class GroundKind { Checkerboard, Paving, Image, Hidden };
+inline constexpr std::size_t ground_kind_count = 4;
 
 struct PuddleVariant {
     bool raymarch = false;
@@ -26,7 +29,7 @@ struct PuddleVariant {
 };
 
 inline constexpr std::size_t tonemap_count = params::choice_count<params::Tonemap>;
-inline constexpr std::size_t puddle_variant_count = 2 * 3 * 2 * tonemap_count;
+inline constexpr std::size_t puddle_variant_count = 2 * ground_kind_count * 2 * tonemap_count;
 
 // True when turbidity leaves the ground less than 1/4096 of its brightness even along the shortest path
 // through the water (straight down from the highest crest): then the refraction is skipped, and the

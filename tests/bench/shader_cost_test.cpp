@@ -77,7 +77,7 @@ TEST(ShaderCost, FollowsElifChains) {
     EXPECT_EQ(fetches(""), 3);
 }
 
-// The variant the default parameters select: the paving (an image ground), no RGBM, the soft tone curve.
+// The variant the default parameters select: the setts (drawn, no texture), no RGBM, the soft tone curve.
 TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     render::PuddleVariant v = render::choose_puddle_variant(params::Params{}, false);
     auto intersect = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
@@ -86,12 +86,13 @@ TEST(ShaderCost, PuddleIntersectCostsLessThanRaymarch) {
     ASSERT_TRUE(intersect.ok() && raymarch.ok());
     const ShaderCost i = estimate_shader_cost(intersect->source, 14),
                      r = estimate_shader_cost(raymarch->source, 14);
-    EXPECT_EQ(i.texture_fetches, 3);   // the surface once, the sky once (reflected or direct), the ground
+    EXPECT_EQ(i.texture_fetches, 2);   // the surface once, the sky once (reflected or direct)
     EXPECT_GT(r.texture_fetches, 14);  // a surface read per march step
     EXPECT_GT(r.alu_ops, i.alu_ops);
 }
 
-// The image ground costs a fetch the checkerboard does not; a hidden ground costs neither.
+// The image ground costs a fetch the checkerboard and the setts do not; a hidden ground costs none of
+// their work.
 TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
     render::PuddleVariant v = render::choose_puddle_variant(params::Params{}, false);
     const auto cost = [&](render::GroundKind g) {
@@ -100,8 +101,12 @@ TEST(ShaderCost, GroundVariantsCarryOnlyTheirOwnWork) {
         return s ? estimate_shader_cost(s->source, 14) : ShaderCost{};
     };
     const ShaderCost checker = cost(render::GroundKind::Checkerboard),
-                     image = cost(render::GroundKind::Image), hidden = cost(render::GroundKind::Hidden);
+                     setts = cost(render::GroundKind::Paving), image = cost(render::GroundKind::Image),
+                     hidden = cost(render::GroundKind::Hidden);
     EXPECT_EQ(image.texture_fetches, checker.texture_fetches + 1);
+    EXPECT_EQ(setts.texture_fetches, checker.texture_fetches);
+    EXPECT_GT(setts.alu_ops, checker.alu_ops);
+    EXPECT_LT(hidden.alu_ops, setts.alu_ops);
     EXPECT_EQ(hidden.texture_fetches, checker.texture_fetches);
     EXPECT_LT(hidden.alu_ops, checker.alu_ops);
 }

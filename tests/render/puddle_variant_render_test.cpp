@@ -18,7 +18,8 @@ TEST(PuddleVariants, EveryVariantCompiles) {
     auto& renderer = engine->world().resource<systems::PuddleRenderer>();
     gpu::Device& device = engine->device();
     for (bool raymarch : {false, true})
-        for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
+        for (GroundKind g :
+             {GroundKind::Checkerboard, GroundKind::Paving, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(render::tonemap_count); ++t) {
                     const PuddleVariant v{.raymarch = raymarch,
@@ -56,7 +57,7 @@ TwoPictures render_both(std::initializer_list<std::string> sets, GroundKind forc
 TEST(PuddleVariants, HiddenGroundLooksLikeTheFullRefraction) {
     // Turbidity 1.2 over the default 4-unit depth: at most 0.6 * e^-8.9 of the ground shows.
     const TwoPictures p =
-        render_both({"water.turbidity=1.2", "ground.checkerboard=false"}, GroundKind::Image);
+        render_both({"water.turbidity=1.2", "ground.checkerboard=false"}, GroundKind::Paving);
     ASSERT_FALSE(p.chosen.empty());
     EXPECT_EQ(p.chosen_variant.ground, GroundKind::Hidden);
     const ImageDiff d = compare_images(p.chosen, p.forced, 1);
@@ -69,7 +70,7 @@ TEST(PuddleVariants, HidingAVisibleGroundChangesThePicture) {
     const TwoPictures p =
         render_both({"water.turbidity=0.05", "ground.checkerboard=false"}, GroundKind::Hidden);
     ASSERT_FALSE(p.chosen.empty());
-    EXPECT_EQ(p.chosen_variant.ground, GroundKind::Image);
+    EXPECT_EQ(p.chosen_variant.ground, GroundKind::Paving);
     EXPECT_GT(compare_images(p.chosen, p.forced, 4).fraction_over, 0.2);
 }
 

@@ -28,11 +28,12 @@ bool has(const std::vector<std::string>& defines, const std::string& d) {
     return std::find(defines.begin(), defines.end(), d) != defines.end();
 }
 
-// The default look is the wet paving (an image ground); the reference preset brings back the checkerboard.
+// The default look is the wet paving (the setts, drawn by the shader); the reference preset brings back the
+// checkerboard.
 TEST(PuddleVariant, DefaultsSelectTheCheapPath) {
     const PuddleVariant v = choose_puddle_variant(with({}), false);
     EXPECT_FALSE(v.raymarch);
-    EXPECT_EQ(v.ground, GroundKind::Image);
+    EXPECT_EQ(v.ground, GroundKind::Paving);
     EXPECT_FALSE(v.env_rgbm);
     EXPECT_EQ(v.tonemap, params::Tonemap::soft);
 }
@@ -40,6 +41,10 @@ TEST(PuddleVariant, DefaultsSelectTheCheapPath) {
 TEST(PuddleVariant, EachParameterPicksItsVariant) {
     EXPECT_TRUE(choose_puddle_variant(with({"render.method=raymarch"}), false).raymarch);
     EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=true"}), false).ground,
+              GroundKind::Checkerboard);
+    EXPECT_EQ(choose_puddle_variant(with({"ground.image=/srv/stones.jpg"}), false).ground, GroundKind::Image);
+    EXPECT_EQ(choose_puddle_variant(with({"ground.image=/srv/stones.jpg", "ground.checkerboard=true"}), false)
+                  .ground,
               GroundKind::Checkerboard);
     EXPECT_TRUE(choose_puddle_variant(with({}), true).env_rgbm);
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=aces"}), false).tonemap, params::Tonemap::aces);
@@ -67,7 +72,8 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
     std::set<std::size_t> slots;
     std::set<std::vector<std::string>> defines;
     for (bool raymarch : {false, true})
-        for (GroundKind g : {GroundKind::Checkerboard, GroundKind::Image, GroundKind::Hidden})
+        for (GroundKind g :
+             {GroundKind::Checkerboard, GroundKind::Paving, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
                     const PuddleVariant v{.raymarch = raymarch,
@@ -80,6 +86,7 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
                     const auto d = variant_defines(v, false);
                     defines.insert(d);
                     EXPECT_EQ(has(d, "METHOD_RAYMARCH"), raymarch);
+                    EXPECT_EQ(has(d, "GROUND_PAVING"), g == GroundKind::Paving);
                     EXPECT_EQ(has(d, "GROUND_IMAGE"), g == GroundKind::Image);
                     EXPECT_EQ(has(d, "GROUND_HIDDEN"), g == GroundKind::Hidden);
                     EXPECT_EQ(has(d, "ENV_RGBM"), rgbm);

@@ -150,7 +150,7 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     const assets::Image kept = render_until_reloaded(*engine);
     EXPECT_EQ(compare_images(before, kept, 0).max_channel_diff, 0) << "a failed reload changes nothing";
     EXPECT_EQ(engine->world().resource<systems::Environment>().source, "procedural night sky");
-    EXPECT_EQ(engine->world().resource<systems::Ground>().source, "procedural cobblestones");
+    EXPECT_EQ(engine->world().resource<systems::Ground>().source, "procedural setts (drawn by the shader)");
 
     set(ParamId::environment_image, cross);
     set(ParamId::ground_image, ground);
@@ -167,18 +167,30 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     EXPECT_EQ(engine->world().resource<systems::Environment>().cube.width(), 12);
 }
 
-// Under the checkerboard no ground is read or generated (a slow board spent seconds on the paving at every
-// start); turning the checkerboard off makes it on the worker, and then the picture is the one a start
-// with the paving gives. A ground.image asked for under the checkerboard is read only then.
-TEST(EnvironmentSystem, TheGroundIsMadeOnlyWhenItShows) {
+// The checkerboard and the setts are drawn by the shader: no ground texture is made for either. A
+// ground.image asked for under the checkerboard is read only when the checkerboard turns off; the setts show
+// until it is ready (here: for good, the file is missing), and taking the image away shows them again.
+TEST(EnvironmentSystem, TheGroundImageIsReadOnlyWhenItShows) {
+    TempDir dir;
+    assets::Image red = assets::Image::make(8, 8);
+    for (std::size_t i = 0; i < red.data.size(); i += 4) red.data[i] = 255, red.data[i + 3] = 255;
+    const std::string red_path = (dir / "red.png").string();
+    ASSERT_TRUE(assets::write_png(red_path, red).ok());
+
     auto engine = make_engine(
         make_params({"rain.intensity=0", "water.turbidity=0.05", "ground.checkerboard=true"}), {96, 54});
     ASSERT_TRUE(engine);
     const auto& ground = engine->world().resource<systems::Ground>();
     EXPECT_FALSE(ground.made);
     EXPECT_FALSE(ground.requested_image.has_value());
-    EXPECT_NE(ground.source.find("the checkerboard shows"), std::string::npos) << ground.source;
+    EXPECT_EQ(ground.source, "checkerboard");
     const assets::Image checkerboard = render_frames(*engine, 2);
+
+    auto setts_engine = make_engine(make_params({"rain.intensity=0", "water.turbidity=0.05"}), {96, 54});
+    ASSERT_TRUE(setts_engine);
+    EXPECT_FALSE(setts_engine->world().resource<systems::Ground>().made) << "the setts need no texture";
+    const assets::Image setts = render_frames(*setts_engine, 2);
+    EXPECT_GT(compare_images(checkerboard, setts, 8).mean_abs_diff, 2.0);
 
     auto& params = engine->params();
     // As --set: make_params set the checkerboard at that precedence.
@@ -192,24 +204,24 @@ TEST(EnvironmentSystem, TheGroundIsMadeOnlyWhenItShows) {
     EXPECT_EQ(errors.count("ground"), 0);
 
     set(ParamId::ground_checkerboard, false);
-    const assets::Image still = render_until_reloaded(*engine);
-    EXPECT_EQ(errors.count("(keeping the checkerboard)"), 1);
+    const assets::Image missing = render_until_reloaded(*engine);
+    EXPECT_EQ(errors.count("/nonexistent/stones.jpg"), 1);
+    EXPECT_EQ(errors.count("(keeping the procedural setts)"), 1);
     EXPECT_FALSE(ground.made);
-    EXPECT_EQ(compare_images(checkerboard, still, 0).max_channel_diff, 0)
-        << "a bad image keeps the checkerboard";
+    EXPECT_LE(compare_images(setts, missing, 1).max_channel_diff, 1) << "a bad image keeps the setts";
+
+    set(ParamId::ground_image, red_path);
+    const assets::Image red_ground = render_until_reloaded(*engine);
+    EXPECT_TRUE(ground.made);
+    EXPECT_EQ(ground.source, red_path);
+    EXPECT_GT(compare_images(setts, red_ground, 8).mean_abs_diff, 2.0);
 
     set(ParamId::ground_image, std::string());
-    const assets::Image paving = render_until_reloaded(*engine);
-    EXPECT_TRUE(ground.made);
-    EXPECT_EQ(ground.source, "procedural cobblestones");
-    EXPECT_GT(compare_images(checkerboard, paving, 8).mean_abs_diff, 2.0);
-
-    auto started_with_paving = make_engine(
-        make_params({"rain.intensity=0", "water.turbidity=0.05", "ground.checkerboard=false"}), {96, 54});
-    ASSERT_TRUE(started_with_paving);
-    EXPECT_TRUE(started_with_paving->world().resource<systems::Ground>().made);
-    const ImageDiff same = compare_images(render_frames(*started_with_paving, 2), paving, 1);
-    EXPECT_LE(same.max_channel_diff, 1);
+    const assets::Image back = render_until_reloaded(*engine);
+    EXPECT_FALSE(ground.made) << "the image taken away is freed";
+    EXPECT_FALSE(ground.requested_image.has_value());
+    EXPECT_LE(compare_images(setts, back, 1).max_channel_diff, 1);
+    EXPECT_EQ(errors.count("keeping"), 1) << "no error since the missing file's";
 }
 
 // A panorama reloaded at run time is converted with the shader the first one compiled (the pipeline stays in
