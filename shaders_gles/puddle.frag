@@ -134,11 +134,13 @@ vec3 ground_colour(vec2 xz) { return texture(u_ground, xz * u_ground_scale).rgb 
 // stone smaller than a few pixels fades to the pattern's mean, so far rows do not shimmer.
 vec3 ground_colour(vec2 xz) {
     vec2 q = xz * u_ground_scale * vec2(4.0, 6.0);  // in stones
+    // Before the rows' shift: it jumps at every row joint, and a pixel there would seem to span half a
+    // stone (the joint drawn as the pattern's mean: light dashes along every row).
+    vec2 footprint = fwidth(q);
     float row = floor(q.y);
     q.x += 0.5 * row + 0.13 * hash12(vec2(row, 7.0));
     vec2 stone_id = floor(q);
     vec2 edge = 0.5 - abs(fract(q) - 0.5);  // to the stone's nearest side, per axis: 0 at a joint
-    vec2 footprint = fwidth(q);
     vec2 joint = smoothstep(0.04 - footprint, 0.04 + footprint, edge);
     vec2 dome = 0.8 + 0.2 * smoothstep(0.0, 0.3, edge);
     float stone = joint.x * joint.y * dome.x * dome.y * (0.6 + 0.4 * hash12(stone_id));
