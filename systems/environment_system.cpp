@@ -1,7 +1,9 @@
 #include "systems/environment_system.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 
@@ -124,10 +126,15 @@ Result<PreparedGround> prepare_ground(const std::string& path, int max_texture_s
     PreparedGround g;
     // An HDR file is stored as sRGB like any other: the ground is lit, never a light.
     auto loaded = assets::read_color_image(path);
-    if (!loaded) return loaded.error();
+    if (!loaded) return Error{"ground.image: " + loaded.error().message, loaded.error().code};
     g.image = assets::to_srgb8(*loaded);
     g.source = path;
-    while (std::max(g.image.width, g.image.height) > max_texture_size) g.image = assets::halve(g.image);
+    const int width = g.image.width, height = g.image.height;
+    const int max_side = std::min(max_texture_size, ground_max_size);
+    while (std::max(g.image.width, g.image.height) > max_side) g.image = assets::halve(g.image);
+    if (g.image.width != width)
+        g.source =
+            fmt::format("{} ({}x{}, halved from {}x{})", path, g.image.width, g.image.height, width, height);
     return g;
 }
 
@@ -155,6 +162,7 @@ void environment_reload_system(gpu::Device& device, const params::Params& params
         if (ground.made)  // frees the image's memory
             if (auto r = placeholder_ground(device, params, ground); !r)
                 spdlog::error("{}", r.error().message);
+        spdlog::info("ground: {}", drawn_ground(params));
     }
     const bool shown = !params.get<ParamId::ground_checkerboard>() && !path.empty();
     if (shown && ground.requested_image != path) {
@@ -165,13 +173,17 @@ void environment_reload_system(gpu::Device& device, const params::Params& params
         });
     }
     if (auto prepared = reload.ground.take(); prepared && ground.requested_image) {  // else taken away
-        const std::string keeping = ground.made ? ground.source : "the procedural setts";
+        const std::string keeping = params.get<ParamId::ground_checkerboard>() ? "the checkerboard"
+                                    : ground.made                              ? ground.source
+                                                                               : "the procedural setts";
         if (!*prepared)
             spdlog::error("{} (keeping {})", prepared->error().message, keeping);
         else if (auto r =
                      upload_ground(device, std::move(prepared->value()), *ground.requested_image, ground);
                  !r)
             spdlog::error("{} (keeping {})", r.error().message, keeping);
+        else
+            spdlog::info("ground: {}", ground.source);
     }
 }
 

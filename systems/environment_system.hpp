@@ -51,7 +51,11 @@ struct Ground {
     bool made = false;  // `texture` holds an image (else the placeholder)
 };
 
-// The ground's CPU half: the image at `path` (not empty) read, as sRGB, halved until the GPU takes it.
+// The ground's CPU half: the image at `path` (not empty) read, as sRGB, halved until the GPU takes it and
+// it is at most ground_max_size a side: a ground seen through water shows no more, and the upload and
+// mipmaps, on the frame thread, stay short (a 16384-texel image froze a frame for seconds on llvmpipe).
+// Errors name ground.image and the file.
+inline constexpr int ground_max_size = 2048;
 struct PreparedGround {
     assets::Image image;
     std::string source;

@@ -224,6 +224,27 @@ TEST(EnvironmentSystem, TheGroundImageIsReadOnlyWhenItShows) {
     EXPECT_EQ(errors.count("keeping"), 1) << "no error since the missing file's";
 }
 
+// A ground image is at most 2048 a side (halved on the worker: the upload and mipmaps run on the frame
+// thread), the log says so, and an error names the parameter and the file.
+TEST(EnvironmentSystem, AGroundImageIsHalvedToTheGroundsLimitAndErrorsNameTheParameter) {
+    TempDir dir;
+    const std::string wide = (dir / "wide.png").string();
+    ASSERT_TRUE(assets::write_png(wide, assets::Image::make(8192, 2)).ok());
+    auto prepared = systems::prepare_ground(wide, 16384);
+    ASSERT_TRUE(prepared) << prepared.error().message;
+    EXPECT_EQ(prepared->image.width, systems::ground_max_size);
+    EXPECT_EQ(prepared->source, wide + " (2048x1, halved from 8192x2)");
+    auto small_gpu = systems::prepare_ground(wide, 1024);
+    ASSERT_TRUE(small_gpu);
+    EXPECT_EQ(small_gpu->image.width, 1024) << "and never past the GPU's limit";
+
+    auto missing = systems::prepare_ground((dir / "missing.png").string(), 16384);
+    ASSERT_FALSE(missing);
+    EXPECT_TRUE(missing.error().message.starts_with("ground.image: ")) << missing.error().message;
+    EXPECT_NE(missing.error().message.find("missing.png"), std::string::npos);
+    EXPECT_EQ(missing.error().code, ExitCode::Asset);
+}
+
 // A panorama reloaded at run time is converted with the shader the first one compiled (the pipeline stays in
 // the Environment resource): a sky edit compiles nothing on the frame thread. Program names only grow on
 // Mesa, so a program compiled again would have a new one.
