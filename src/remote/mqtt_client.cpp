@@ -58,6 +58,7 @@ Result<std::unique_ptr<MqttClient>> MqttClient::start(ClientOptions options) {
         return fail("last will", rc);
     mosquitto_connect_callback_set(c->mosq_, on_connect);
     mosquitto_message_callback_set(c->mosq_, on_message);
+    mosquitto_publish_callback_set(c->mosq_, on_publish);
     MqttClient* self = c.get();
     c->thread_ = start_worker_thread([self](std::stop_token stop) { self->run(stop); });
     return c;
@@ -108,12 +109,25 @@ void MqttClient::on_connect(mosquitto*, void* p, int rc) {
     }
     for (const std::string& topic : self->options_.subscriptions)
         mosquitto_subscribe(self->mosq_, nullptr, topic.c_str(), 1);
-    mosquitto_publish(self->mosq_, nullptr, self->options_.availability_topic.c_str(), 6, "online", 1, true);
+    self->unacknowledged_ = 0;  // a new session: what was in flight on the old one is not coming back
+    self->send_qos1(self->options_.availability_topic, "online", 6, true);
     spdlog::info("remote: connected to {}:{} as {}", self->options_.host, self->options_.port,
                  self->options_.client_id);
     self->outage_reported_ = false;
     self->connected_ = true;
     ++self->connections_;
+}
+
+void MqttClient::on_publish(mosquitto*, void* p, int) {
+    auto* self = static_cast<MqttClient*>(p);
+    self->unacknowledged_ = std::max(self->unacknowledged_ - 1, 0);
+}
+
+int MqttClient::send_qos1(const std::string& topic, const void* payload, std::size_t size, bool retain) {
+    const int rc =
+        mosquitto_publish(mosq_, nullptr, topic.c_str(), static_cast<int>(size), payload, 1, retain);
+    if (rc == MOSQ_ERR_SUCCESS) ++unacknowledged_;
+    return rc;
 }
 
 void MqttClient::on_message(mosquitto*, void* p, const mosquitto_message* m) {
@@ -187,11 +201,8 @@ void MqttClient::flush_outbox() {
         std::lock_guard lock(outbox_mutex_);
         sending_.swap(outbox_);
     }
-    for (const Outbound& o : sending_) {
-        const int rc = mosquitto_publish(mosq_, nullptr, o.topic.c_str(), static_cast<int>(o.payload.size()),
-                                         o.payload.data(), 1, o.retain);
-        if (rc != MOSQ_ERR_SUCCESS) ++unsent_;
-    }
+    for (const Outbound& o : sending_)
+        if (send_qos1(o.topic, o.payload.data(), o.payload.size(), o.retain) != MOSQ_ERR_SUCCESS) ++unsent_;
     sending_.clear();
 }
 
@@ -232,10 +243,13 @@ void MqttClient::run(std::stop_token stop) {
     }
     if (connected_) {  // a clean goodbye: what is queued, then `offline` (the will is only for vanishing)
         flush_outbox();
-        mosquitto_publish(mosq_, nullptr, options_.availability_topic.c_str(), 7, "offline", 1, true);
-        const double give_up = monotonic_seconds() + 1.0;
-        do mosquitto_loop(mosq_, 20, 1);
-        while (mosquitto_want_write(mosq_) && monotonic_seconds() < give_up);
+        send_qos1(options_.availability_topic, "offline", 7, true);
+        // Until the broker has acknowledged all of it (a broker that stopped answering: 3 s at most).
+        const double give_up = monotonic_seconds() + 3.0;
+        while (monotonic_seconds() < give_up) {
+            if (mosquitto_loop(mosq_, 20, 1) != MOSQ_ERR_SUCCESS) break;  // the connection is gone
+            if (unacknowledged_ == 0 && !mosquitto_want_write(mosq_)) break;
+        }
         mosquitto_disconnect(mosq_);
         mosquitto_loop(mosq_, 20, 1);
         connected_ = false;

@@ -84,8 +84,11 @@ private:
     void deliver(Inbound in);
     void wait(std::stop_token& stop, double seconds);
     void warn_once(const std::string& line);
+    // mosquitto_publish at QoS 1 (network thread), counted until the broker's PUBACK (on_publish).
+    int send_qos1(const std::string& topic, const void* payload, std::size_t size, bool retain);
     static void on_connect(mosquitto*, void* self, int rc);
     static void on_message(mosquitto*, void* self, const mosquitto_message* m);
+    static void on_publish(mosquitto*, void* self, int mid);
 
     ClientOptions options_;
     mosquitto* mosq_ = nullptr;
@@ -98,6 +101,10 @@ private:
     std::atomic<std::uint64_t> connections_{0}, dropped_{0}, unsent_{0};
     std::atomic<bool> connected_{false};
     bool socket_open_ = false;  // network thread only
+    // Network thread only: QoS 1 messages sent since the last connection and not yet acknowledged. A clean
+    // stop waits for them: libmosquitto keeps only 20 in flight, and the rest of a burst (the discovery
+    // configs, cleared at a stop) would otherwise die with the connection.
+    int unacknowledged_ = 0;
     bool outage_reported_ = false;
     double tokens_ = rate_burst, tokens_at_ = 0;
     std::vector<Inbound> held_;  // network thread only: the newest rate-limited message per topic
