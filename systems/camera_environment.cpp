@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -114,24 +115,33 @@ const render::BuiltPipeline& built(const CameraEnvironment& env, CameraPass pass
     return *env.pipelines.find(pass);
 }
 
-// Everything but the pipelines: samplers and the cube.
-Result<void> finish_camera_resources(gpu::Device& device, CameraEnvironment& env) {
+// Everything but the pipelines and the cube (made at the first frame, for the sky then shown): samplers.
+void finish_camera_resources(gpu::Device& device, CameraEnvironment& env) {
     env.nearest = device.create_sampler(
         {.label = "camera planes", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
     env.linear = device.create_sampler({.label = "camera colour", .mipmaps = true});
-    auto made = device.create_texture({.label = "camera environment",
-                                       .kind = gpu::TextureKind::Cube,
-                                       .format = gpu::TextureFormat::SRGB8_A8,
-                                       .width = camera_cube_size,
-                                       .height = camera_cube_size,
-                                       .mip_levels = gpu::full_mip_count(camera_cube_size),
-                                       .render_target = true});
-    if (!made) return made.error();
-    env.cube = std::move(made).value();
-    return {};
+}
+
+// The cube at the size the sky asks for: made at the first frame, made again when a reloaded sky's face
+// size changes it (not per frame).
+Result<void> ensure_cube(gpu::Device& device, const Environment& sky, CameraEnvironment& env) {
+    const int size = camera_cube_size(sky);
+    return ensure_texture(device, env.cube,
+                          {.label = "camera environment",
+                           .kind = gpu::TextureKind::Cube,
+                           .format = gpu::TextureFormat::SRGB8_A8,
+                           .width = size,
+                           .height = size,
+                           .mip_levels = gpu::full_mip_count(size),
+                           .render_target = true},
+                          env);
 }
 
 }  // namespace
+
+int camera_cube_size(const Environment& sky) {
+    return sky.cube ? std::clamp(sky.cube.width(), 1, camera_cube_max_size) : camera_cube_max_size;
+}
 
 std::optional<Result<void>> poll_camera_pipelines(gpu::Device& device, CameraEnvironment& env) {
     if (env.ready) return Result<void>{};
@@ -148,7 +158,7 @@ std::optional<Result<void>> poll_camera_pipelines(gpu::Device& device, CameraEnv
         if (!*polled) waiting = true;
     }
     if (waiting) return std::nullopt;
-    if (auto made = finish_camera_resources(device, env); !made) return made;
+    finish_camera_resources(device, env);
     env.ready = true;
     return Result<void>{};
 }
@@ -261,8 +271,13 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
         env.cube_due = true;
     }
     if (!env.has_frame) return;
-    if (!env.cube_due && env.cube_params_revision == params.revision()) return;
+    const bool resized = env.cube && env.cube.width() != camera_cube_size(sky);
+    if (!env.cube_due && !resized && env.cube_params_revision == params.revision()) return;
     env.cube_due = false;
+    if (auto made = ensure_cube(device, sky, env); !made) {  // ensure_texture has set `failed`
+        spdlog::error("camera: {} (the cubemap stays)", made.error().message);
+        return;
+    }
     env.cube_params_revision = params.revision();
 
     // The image centre looks toward -X, 35 degrees up: where the default view's reflection looks.
@@ -276,7 +291,7 @@ void camera_environment_system(gpu::Device& device, const params::Params& params
     for (int face = 0; face < 6; ++face) {
         auto pass = device.begin_pass(
             {.label = "camera cube face",
-             .target = {.texture = &env.cube, .size = {camera_cube_size, camera_cube_size}, .face = face},
+             .target = {.texture = &env.cube, .size = {env.cube.width(), env.cube.width()}, .face = face},
              .load = gpu::LoadOp::DontCare});  // each face is drawn whole
         pass.set_pipeline(cube.pipeline)
             .set_texture(0, sky.cube, sky.sampler)

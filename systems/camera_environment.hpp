@@ -17,7 +17,11 @@
 
 namespace puddle::systems {
 
-inline constexpr int camera_cube_size = 256;  // per face: the reflection is blurred by ripples anyway
+// The camera's cube, per face: at most 256 texels (the reflection is blurred by ripples anyway), and no
+// sharper than the sky it is mixed with (environment.camera_blend), so a slow board that asks for small sky
+// faces (environment.face_size) also redraws a small cube at every camera frame.
+inline constexpr int camera_cube_max_size = 256;
+int camera_cube_size(const Environment& sky);
 
 // The camera's passes, each a variant of camera_convert.frag or camera_cube.frag; `convert_external` only
 // where the GPU samples external images.
@@ -28,7 +32,7 @@ using CameraPipelines = render::PipelineCache<CameraPass, 5, render::enum_index<
 struct CameraEnvironment {
     gpu::Texture plane0, plane1;  // the copied frame: RGBA8 (YUYV pairs), or R8 + RG8 (NV12)
     gpu::Texture colour;          // the converted frame, sRGB, camera size, with mipmaps
-    gpu::Texture cube;            // what the puddle reflects while the camera streams
+    gpu::Texture cube;            // what the puddle reflects while the camera streams: camera_cube_size(sky)
     gpu::Sampler nearest, linear;
     // Asked for at the first camera frame (most runs never need them), built off the frame thread; the
     // cube passes read environment.camera_blend.
@@ -49,7 +53,7 @@ struct CameraEnvironment {
     std::uint64_t cube_params_revision = 0;
 
     // The cube the puddle pass should sample, or null for the static cubemap.
-    const gpu::Texture* reflection() const { return has_frame && !failed ? &cube : nullptr; }
+    const gpu::Texture* reflection() const { return has_frame && !failed && cube ? &cube : nullptr; }
 };
 
 // Asks for the pipelines on the first call and takes them as they are built (the pipeline cache's poll:

@@ -253,6 +253,35 @@ TEST_F(CameraEnvironmentTest, BlendMixesTheCameraWithTheCubemap) {
     }
 }
 
+// The cube is at most 256 per face and no sharper than the sky: a slow board's 64-texel sky gets a 64-texel
+// camera cube, which still shows the camera.
+TEST_F(CameraEnvironmentTest, TheCubeIsNoSharperThanTheSky) {
+    const OrangeFrame orange;
+    ASSERT_TRUE(systems::upload_camera_frame(engine->device(), orange.image, env));
+    systems::camera_environment_system(engine->device(), engine->params(), sky(), env);
+    ASSERT_GT(sky().cube.width(), 256);
+    EXPECT_EQ(env.cube.width(), 256);
+
+    auto small = make_engine(make_params({"environment.face_size=64"}), {64, 36});
+    ASSERT_TRUE(small);
+    CameraEnvironment small_env;
+    ASSERT_TRUE(systems::build_camera_pipelines(small->device(), small_env));
+    small->params().set(params::ParamId::environment_camera_blend, 1.0f, params::ParamSource::CommandLine);
+    ASSERT_TRUE(systems::upload_camera_frame(small->device(), orange.image, small_env));
+    const auto& small_sky = small->world().resource<systems::Environment>();
+    systems::camera_environment_system(small->device(), small->params(), small_sky, small_env);
+    ASSERT_EQ(small_sky.cube.width(), 64);
+    EXPECT_EQ(small_env.cube.width(), 64);
+    ASSERT_EQ(small_env.reflection(), &small_env.cube);
+    const auto face = small->device().read_texture(small_env.cube, 0);
+    ASSERT_EQ(face.size(), std::size_t{64 * 64 * 4});
+    std::array<double, 3> mean{};
+    for (std::size_t i = 0; i < face.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c) mean[c] += face[i + c] * 255.0 / (64 * 64);
+    expect_near({int(std::lround(mean[0])), int(std::lround(mean[1])), int(std::lround(mean[2]))},
+                {240, 120, 20}, "the 64-texel cube shows the camera");
+}
+
 // What the conversion shader should give for one sample, worked out on the CPU: the driver's matrix and
 // range (yuv_matrix), clamped, in sRGB codes as the colour texture stores them.
 Rgb reference(int y, int u, int v, YuvMatrix matrix, bool full_range) {
