@@ -24,7 +24,15 @@ gpio_platform=""  # gpio-sim.N while the chip is live
 # --- the chip --------------------------------------------------------------------------------------
 gpio_sim_setup() {
     load_modules gpio "" || { say "FAIL gpio-chip: loading configfs, irq_sim and gpio-sim (modules/gpio.list)"; return 1; }
-    mountpoint -q /sys/kernel/config || mount -t configfs none /sys/kernel/config ||
+    # systemd's sys-kernel-config.mount may be mounting it at this moment (early in a short run, systemd
+    # is still starting): a mount that fails is tried again until one of the two has it there.
+    local _
+    for _ in $(seq 1 50); do
+        mountpoint -q /sys/kernel/config && break
+        mount -t configfs none /sys/kernel/config 2>/dev/null && break
+        sleep 0.1
+    done
+    mountpoint -q /sys/kernel/config ||
         { say "FAIL gpio-chip: cannot mount configfs on /sys/kernel/config"; return 1; }
     mountpoint -q /sys/kernel/debug || mount -t debugfs none /sys/kernel/debug 2>/dev/null
     [ -d /sys/kernel/config/gpio-sim ] || { say "FAIL gpio-chip: gpio-sim loaded but no /sys/kernel/config/gpio-sim"; return 1; }

@@ -67,22 +67,17 @@ gpio_fetch_tools() {
     fi
 }
 
-# The same checks against the libgpiod 2 backend: tests/vm/gpio_sim/build-gpiod2 builds puddle against
-# Debian 13's libgpiod in its own build folder (PUDDLE_VM_GPIOD2_BUILD, default BUILD/gpiod2).
+# The same checks against the libgpiod 2 backend: tests/vm/gpio_sim/build-gpiod2 makes a puddle with
+# Debian 13's libgpiod from the main build's objects and its v2 backend, in seconds, in
+# PUDDLE_VM_GPIOD2_BUILD (default BUILD/gpiod2). PUDDLE_VM_GPIOD2=off leaves that part out.
 gpio_build_v2() {
     local dir=${PUDDLE_VM_GPIOD2_BUILD:-$build/gpiod2} start=$SECONDS rc
-    # Its first build compiles the whole binary (23 min on the loaded 2-core development machine), too
-    # long for every test run: by default (auto) only a folder that was built before is brought up to date.
-    case ${PUDDLE_VM_GPIOD2:-auto} in
-        off) gpio_puddle2_why="PUDDLE_VM_GPIOD2=off"; return ;;
-        on) ;;
-        *) if [ ! -f "$dir/build.ninja" ]; then
-               gpio_puddle2_why="no libgpiod 2 build in $dir yet: PUDDLE_VM_GPIOD2=on tests/vm/run makes it (a whole build of the binary, once)"
-               return
-           fi ;;
-    esac
-    say "gpio: building puddle against libgpiod 2 in $dir"
-    "$here/gpio_sim/build-gpiod2" "$src" "$dir" "$cache" >"$out/gpiod2-build.log" 2>&1
+    if [ "${PUDDLE_VM_GPIOD2:-on}" = off ]; then
+        gpio_puddle2_why="PUDDLE_VM_GPIOD2=off"
+        return
+    fi
+    say "gpio: linking puddle with libgpiod 2 in $dir"
+    "$here/gpio_sim/build-gpiod2" "$src" "$build" "$dir" "$cache" >"$out/gpiod2-build.log" 2>&1
     rc=$?
     if [ $rc -eq 0 ]; then
         gpio_puddle2=$dir/puddle
