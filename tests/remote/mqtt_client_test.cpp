@@ -37,7 +37,8 @@ TEST(MqttClientStop, ABurstQueuedJustBeforeTheStopAllReachesTheBroker) {
 
     MqttTestClient fresh({.port = broker.port()});
     fresh.subscribe("burst/#");
-    ASSERT_TRUE(fresh.wait_for("burst/status", [](const std::string& p) { return p == "offline"; }, 10))
+    ASSERT_TRUE(fresh.wait_for(
+        "burst/status", [](const std::string& p) { return p == "offline"; }, 10))
         << "the goodbye comes after the burst";
     ASSERT_TRUE(fresh.wait_for(fmt::format("burst/{}", burst - 1), {}, 10));
     int retained = 0;
