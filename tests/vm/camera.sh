@@ -1,30 +1,33 @@
 # Sourced by tests/vm/guest.sh with vivid loaded on /dev/video0 (see the HOOK comment there).
-# 1. The reflection shows vivid's picture: a headless render with environment.source = camera differs
-#    clearly from the same render reflecting the cubemap, and the camera reported streaming.
+# 1. The reflection shows vivid's picture: a headless render with environment.source = camera, which
+#    must report streaming, and the same render reflecting the cubemap, which the host compares with it
+#    (camera-reflection in tests/vm/run: they must differ clearly).
 # 2. Unplugging: unbinding vivid's device while puddle streams from it (as a USB camera pulled out: the
 #    open descriptor then fails with ENODEV; `rmmod` itself is refused while the device is open) brings
 #    back the cubemap; puddle keeps running and ends cleanly on SIGTERM. The device is bound again
 #    afterwards for the unload check that follows.
 # shellcheck shell=bash
 camera_puddle_test() {
-    local diff_tool log pid rc i
-    diff_tool="$(dirname "$VM_PUDDLE")/tests/puddle-image-diff"
+    local log pid rc i
     # shellcheck disable=SC2206  # VM_PUDDLE_SETS: the run's --set list (tests/vm/run), split on purpose
     local common=(--backend headless --size 160x90 --seed "$VM_SEED" --frames 8 $VM_PUDDLE_SETS)
     local cam=(--set environment.source=camera --set environment.camera_device=/dev/video0
                --set environment.camera_width="$VM_W" --set environment.camera_height="$VM_H")
 
+    local t0=$SECONDS
     "$VM_PUDDLE" "${common[@]}" --screenshot "$out/camera-cubemap.png" >"$out/camera-cubemap.log" 2>&1
+    local t1=$SECONDS
     "$VM_PUDDLE" "${common[@]}" "${cam[@]}" --screenshot "$out/camera-vivid.png" >"$out/camera-vivid.log" 2>&1
     rc=$?
+    say "NOTE camera: 8 frames reflecting the cubemap took $((t1 - t0)) s, reflecting the camera $((SECONDS - t1)) s"
     if [ "$rc" -ne 0 ]; then
         say "FAIL camera-puddle: puddle with the camera exited $rc (log: camera-vivid.log)"
     elif ! grep -q "camera: streaming" "$out/camera-vivid.log"; then
         say "FAIL camera-puddle: puddle never streamed from /dev/video0: $(grep -m1 -E '^(warning|error)' "$out/camera-vivid.log")"
-    elif "$diff_tool" "$out/camera-vivid.png" "$out/camera-cubemap.png" --mean 2 >/dev/null 2>&1; then
-        say "FAIL camera-puddle: the reflection with vivid looks like the cubemap"
     else
-        say "PASS camera-puddle: $(grep -m1 -o 'camera: streaming.*' "$out/camera-vivid.log"); the reflection differs from the cubemap"
+        # The host compares the two pictures (camera-reflection, tests/vm/run): the image tool's
+        # libraries take 15 s to load in here.
+        say "PASS camera-puddle: $(grep -m1 -o 'camera: streaming.*' "$out/camera-vivid.log")"
     fi
 
     # Unplug mid-run.

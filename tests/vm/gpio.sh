@@ -123,13 +123,18 @@ gpio_wait_value() {  # param, value, seconds
 }
 gpio_frame() { grep -o 'kms: frame [0-9]* on screen' "$gpio_log" | tail -n 1 | grep -o '[0-9]*' ; }
 
-# What the kernel reports for one line: gpioinfo's flags (Debian 12's gpiod tools, unpacked by the host),
-# else debugfs's summary.
-gpio_line_info() {
-    if [ -n "$VM_GPIO_TOOLS" ] && [ -x "$VM_GPIO_TOOLS/usr/bin/gpioinfo" ]; then
-        "$VM_GPIO_TOOLS/usr/bin/gpioinfo" "$gpio_chip" | grep -E "^[[:space:]]*line[[:space:]]+$1:"
+# What the kernel reports for the chip's lines: gpioinfo's flags (Debian 12's gpiod tools, unpacked by
+# the host), else debugfs's summary; gpio_line_info picks one line from it (one gpioinfo for all lines:
+# each start of a program takes about a second in an emulated CPU).
+gpio_has_tools() { [ -n "$VM_GPIO_TOOLS" ] && [ -x "$VM_GPIO_TOOLS/usr/bin/gpioinfo" ]; }
+gpio_chip_info() {
+    if gpio_has_tools; then "$VM_GPIO_TOOLS/usr/bin/gpioinfo" "$gpio_chip"; else cat /sys/kernel/debug/gpio; fi
+}
+gpio_line_info() {  # chip info, line number
+    if gpio_has_tools; then
+        grep -E "^[[:space:]]*line[[:space:]]+$2:" <<<"$1"
     else
-        grep -E "\(GPIO$1 " /sys/kernel/debug/gpio
+        grep -E "\(GPIO$2 " <<<"$1"
     fi
 }
 
@@ -166,8 +171,10 @@ active_low = true"
         return
     fi
     ok=1
+    local chip_info
+    chip_info=$(gpio_chip_info)
     for n in 17 18 22 27; do
-        info=$(gpio_line_info $n)
+        info=$(gpio_line_info "$chip_info" $n)
         echo "$info" >>"$out/$tag-lineinfo.txt"
         if [[ $info != *puddle* ]] || ! grep -q -i 'active.low' <<<"$info"; then
             say "FAIL $tag-lines: GPIO$n is not held by puddle as active-low: ${info:-no such line}"; ok=0
@@ -177,7 +184,7 @@ active_low = true"
             say "FAIL $tag-lines: GPIO$n reads $(gpio_value $n) with puddle's pull-up (the sim's own pull is down)"; ok=0
         fi
     done
-    [ $ok = 1 ] && say "PASS $tag-lines: GPIO17, 18, 22, 27 on chip $gpio_label resolved and held by puddle, active-low, pull-up applied (the lines read 1): $(gpio_line_info 17 | tr -s ' \t' ' ')"
+    [ $ok = 1 ] && say "PASS $tag-lines: GPIO17, 18, 22, 27 on chip $gpio_label resolved and held by puddle, active-low, pull-up applied (the lines read 1): $(gpio_line_info "$chip_info" 17 | tr -s ' \t' ' ')"
 
     # 2. The encoder: 3 detents clockwise (0.5 -> 1.1), then 1 back (0.9).
     gpio_turn cw 3

@@ -12,6 +12,15 @@ set -u
 out=/run/vm/out
 busybox=/run/vm/busybox
 serial=/dev/ttyS0
+# Every puddle started here compiles its shaders through Mesa's disk cache, kept by the host between runs
+# (tests/vm/run, PUDDLE_VM_SHADER_CACHE) and copied back at the end; the service gets a copy in its own
+# cache folder (service.sh). Mesa works on a copy in memory: pointed at the share itself it wrote only
+# its index there, no shader.
+shader_store=/run/vm/shader-cache
+if [ "${VM_SHADER_CACHE:-0}" = 1 ] && mountpoint -q "$shader_store" && mkdir -p /run/vm/tmp/shader-cache &&
+    cp -R "$shader_store/." /run/vm/tmp/shader-cache/ && touch /run/vm/tmp/shader-cache.copied; then
+    export MESA_SHADER_CACHE_DIR=/run/vm/tmp/shader-cache
+fi
 
 say() { echo "VMTEST: $*"; }
 
@@ -307,6 +316,7 @@ cec_test() {
 
 say "NOTE boot: the tests start $(cut -d ' ' -f 1 /proc/uptime) s after the kernel (systemd $(systemctl --version | awk 'NR == 1 { print $2 }'), $(systemctl is-system-running 2>/dev/null))"
 for t in $VM_TESTS; do
+    t0=$(cut -d ' ' -f 1 /proc/uptime)
     case $t in
         kms) kms_test ;;
         camera) camera_test ;;
@@ -318,6 +328,13 @@ for t in $VM_TESTS; do
             . "$VM_SRC/tests/vm/service.sh" ;;
         *) say "FAIL $t: unknown test" ;;
     esac
+    say "NOTE time: $t took $(awk -v t0="$t0" '{ printf "%.0f", $1 - t0 }' /proc/uptime) s"
 done
+if [ -n "${MESA_SHADER_CACHE_DIR:-}" ]; then
+    written=$(find "$MESA_SHADER_CACHE_DIR" -type f -newer /run/vm/tmp/shader-cache.copied | wc -l)
+    cp -R "$MESA_SHADER_CACHE_DIR/." "$shader_store/" ||
+        say "NOTE shader cache: copying it back to the host failed"
+    say "NOTE shader cache: $written files written, $(find "$MESA_SHADER_CACHE_DIR" -type f | wc -l) in all"
+fi
 # The VM's journal, for whoever reads the results (build/vm-test/share/journal.txt).
 journalctl -b -o short-monotonic --no-pager >"$out/journal.txt" 2>&1

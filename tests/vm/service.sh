@@ -10,7 +10,7 @@
 #   service-reload    systemctl reload rereads the config; an edit applies on the next frames
 #   service-state     knob state in StateDirectory survives a restart (needs a GPIO chip: else SKIP)
 #   service-stop      systemctl stop ends it; (the host) the console is back as it was
-#   service-purge     dpkg --purge removes the unit, /var/lib/puddle and the config, nothing runs
+#   service-purge     dpkg --purge removes the unit, /var/lib/puddle, /var/cache/puddle and the config, nothing runs
 # The pace: the test's config (as a user edits /etc/puddle/puddle.toml) is small enough for llvmpipe
 # in an emulated CPU, and a drop-in adds --fixed-step --fps-cap and --log-level debug to ExecStart (as
 # `systemctl edit puddle` would; nothing in it touches the hardening), so frame N on screen is the
@@ -107,7 +107,8 @@ svc_install() {
 # checkerboard ground (no procedural paving), few drops, a fixed seed and no adaptive scale (the
 # screen's refresh would lower the render scale while llvmpipe lags); the drop-in
 # also gives a board this slow more time: TimeoutStartSec (llvmpipe in an emulated CPU took 30 to 64 s
-# to its first frame) and WatchdogSec (a frame took over 10 s on a loaded 2-core host). Without
+# to its first frame with no shader cache) and WatchdogSec 15 (a frame takes 1.5 to 2.5 s here, about
+# 5 s beside the rest of ctest; systemd arms the watchdog only once start-up is complete). Without
 # a GPIO chip, a switch on puddle's mock GPIO backend (fed from svc_knobs) is the state check's knob; with
 # the gpio test's gpio-sim chip (tests/vm/gpio.sh, which runs before this and leaves it configured but not
 # live) it is a switch on that real chip, opened by the service as user puddle through the shipped udev
@@ -116,7 +117,7 @@ svc_knobs=/run/vm/knobs.txt
 svc_real_chip=0
 svc_configure() {
     svc_set rain seed 7 && svc_set rain drop_count 32 && svc_set rain intensity 1.5 &&
-        svc_set wave resolution 128 && svc_set render target_fps 0 && svc_set environment face_size 64 &&
+        svc_set wave resolution 128 && svc_set render target_fps 0 && svc_set environment face_size 32 &&
         svc_set ground checkerboard true || return 1
     local gpio=""
     if [ -d /sys/kernel/config/gpio-sim/puddle ] && declare -F gpio_sim_live >/dev/null && gpio_sim_live 1; then
@@ -134,10 +135,16 @@ svc_configure() {
         gpio=" --gpio mock:$svc_knobs"
     fi
     cp /etc/puddle/puddle.toml "$out/service.toml"
+    # The shaders the tests before compiled (guest.sh's MESA_SHADER_CACHE_DIR, kept between runs), in the
+    # unit's own cache folder: as on a board after its first start. Only the time to the first frame changes.
+    if [ -n "${MESA_SHADER_CACHE_DIR:-}" ] && [ "$(svc_show CacheDirectory)" = puddle ]; then
+        install -d -o puddle -g puddle -m 0750 /var/cache/puddle &&
+            cp -R "$MESA_SHADER_CACHE_DIR/." /var/cache/puddle/ && chown -R puddle:puddle /var/cache/puddle
+    fi
     local exec_start
     exec_start=$(grep -m1 '^ExecStart=' "$(svc_show FragmentPath)")
     mkdir -p /etc/systemd/system/$svc.d
-    printf '[Service]\nTimeoutStartSec=300\nWatchdogSec=30\nExecStart=\n%s --fixed-step --fps-cap %s --log-level debug%s\n' \
+    printf '[Service]\nTimeoutStartSec=300\nWatchdogSec=15\nExecStart=\n%s --fixed-step --fps-cap %s --log-level debug%s\n' \
         "$exec_start" "$VM_FPS" "$gpio" >/etc/systemd/system/$svc.d/vm-test.conf
     systemctl daemon-reload
 }
@@ -331,6 +338,11 @@ svc_state() {
         say "FAIL service-state: $state: $(stat -c '%U %a' "$state"), holds: $(tr '\n' ' ' <"$state" | cut -c 1-120)"
         return 1
     fi
+    # The state folder is the user's data: Mesa's shader cache belongs in the unit's CacheDirectory.
+    if [ -e /var/lib/puddle/.cache ]; then
+        say "FAIL service-state: /var/lib/puddle/.cache exists: Mesa keeps its shader cache in the state folder ($(ls /var/lib/puddle/.cache | head -n 3 | tr '\n' ' '))"
+        return 1
+    fi
     : >"$svc_knobs"  # the restarted process reads the script again from its start
     local pid restored
     pid=$(svc_show MainPID)
@@ -399,7 +411,7 @@ svc_purge() {
     fi
     sleep 1
     local left="" p
-    for p in /usr/lib/systemd/system/$svc /lib/systemd/system/$svc /var/lib/puddle /etc/puddle/puddle.toml \
+    for p in /usr/lib/systemd/system/$svc /lib/systemd/system/$svc /var/lib/puddle /var/cache/puddle /etc/puddle/puddle.toml \
         /etc/systemd/system/multi-user.target.wants/$svc /usr/bin/puddle; do
         [ -e "$p" ] && left+="$p "
     done
@@ -410,7 +422,7 @@ svc_purge() {
     elif [ "$(svc_show LoadState)" != not-found ]; then
         say "FAIL service-purge: systemd still knows the unit ($(svc_show LoadState), $(svc_show ActiveState))"
     else
-        say "PASS service-purge: unit, /var/lib/puddle and the config removed, nothing running (a start was under way: main PID ${running}); the user puddle stays"
+        say "PASS service-purge: unit, /var/lib/puddle, /var/cache/puddle and the config removed, nothing running (a start was under way: main PID ${running}); the user puddle stays"
     fi
 }
 
