@@ -26,9 +26,8 @@ struct ProbeReport {
 // defaults.
 ProbeReport run_probe(const std::string& args) {
     const test::CommandResult r = test::run_command(
-        "env -u MALLOC_ARENA_MAX -u MALLOC_MMAP_THRESHOLD_ -u MALLOC_TRIM_THRESHOLD_ "
-        "-u GLIBC_TUNABLES " PUDDLE_PROCESS_SETUP_PROBE " " +
-        args);
+        "env -u MALLOC_ARENA_MAX -u MALLOC_MMAP_THRESHOLD_ -u MALLOC_TRIM_THRESHOLD_ -u GLIBC_TUNABLES " +
+        test::program_command(PUDDLE_PROCESS_SETUP_PROBE) + " " + args);
     ProbeReport report{.output = r.output, .exit_code = r.exit_code};
     std::istringstream lines(r.output);
     std::string name, value;

@@ -25,11 +25,11 @@ TEST(Deploy, SystemdAcceptsTheUnit) {
     const auto at = text.find("/usr/bin/puddle");
     ASSERT_NE(at, std::string::npos);
     text.replace(at, std::string("/usr/bin/puddle").size(), PUDDLE_BINARY);
-    for (const char* key :
-         {"Type=notify", "WatchdogSec=", "Restart=always", "StateDirectory=puddle",
-          "ConfigurationDirectory=puddle", "CacheDirectory=puddle",
-          "Environment=MESA_SHADER_CACHE_DIR=%C/puddle", "NoNewPrivileges=yes", "ProtectSystem=strict", "ProtectHome=yes",
-          "PrivateTmp=yes", "SupplementaryGroups=video render input gpio", "TTYPath=/dev/tty"})
+    for (const char* key : {"Type=notify", "WatchdogSec=", "Restart=always", "StateDirectory=puddle",
+                            "ConfigurationDirectory=puddle", "CacheDirectory=puddle",
+                            "Environment=MESA_SHADER_CACHE_DIR=%C/puddle", "NoNewPrivileges=yes",
+                            "ProtectSystem=strict", "ProtectHome=yes", "PrivateTmp=yes",
+                            "SupplementaryGroups=video render input gpio", "TTYPath=/dev/tty"})
         EXPECT_NE(text.find(key), std::string::npos) << key;
     const std::string path = dir.write("puddle.service", text);
     const auto verify = run_command("systemd-analyze verify " + path);

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,7 +98,12 @@ TEST(ConsoleMode, ThroughTheKernelAPipeIsNoVirtualTerminal) {
     int mode = -1;
     errno = 0;
     EXPECT_EQ(system_console_io().get_mode(ends[0], mode), -1);
+#ifdef PUDDLE_TESTS_UNDER_EMULATOR
+    // qemu-user answers the ioctls it does not emulate, KDGETMODE among them, with ENOSYS.
+    EXPECT_TRUE(errno == ENOTTY || errno == ENOSYS) << std::strerror(errno);
+#else
     EXPECT_EQ(errno, ENOTTY);
+#endif
     EXPECT_EQ(system_console_io().name(ends[0]), "");
     EXPECT_FALSE(ConsoleGraphicsMode::enter(system_console_io(), ends[0]).has_value());
     ::close(ends[0]);

@@ -101,8 +101,13 @@ CommandResult run_command(const std::string& command) {
     return r;
 }
 
+std::string program_command(const std::string& path) {
+    const std::string emulator = PUDDLE_TEST_EMULATOR;
+    return emulator.empty() ? path : emulator + " " + path;
+}
+
 CommandResult run_puddle(const std::string& args) {
-    return run_command(std::string(PUDDLE_BINARY) + " " + args);
+    return run_command(program_command(PUDDLE_BINARY) + " " + args);
 }
 
 std::filesystem::path output_dir() {

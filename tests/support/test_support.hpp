@@ -58,6 +58,9 @@ struct CommandResult {
     std::string output;
 };
 CommandResult run_command(const std::string& command);
+// The shell command that runs one of the build's own programs (an absolute path): the path itself, or
+// under deploy/cross-build.sh --test the cross build's emulator (qemu-user) followed by it.
+std::string program_command(const std::string& path);
 // The puddle binary under test, run with these arguments.
 CommandResult run_puddle(const std::string& args);
 
