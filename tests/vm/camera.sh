@@ -14,13 +14,16 @@ camera_puddle_test() {
     local cam=(--set environment.source=camera --set environment.camera_device=/dev/video0
                --set environment.camera_width="$VM_W" --set environment.camera_height="$VM_H")
 
-    local t0=$SECONDS
+    local t0=$SECONDS cubemap_rc
     "$VM_PUDDLE" "${common[@]}" --screenshot "$out/camera-cubemap.png" >"$out/camera-cubemap.log" 2>&1
+    cubemap_rc=$?
     local t1=$SECONDS
     "$VM_PUDDLE" "${common[@]}" "${cam[@]}" --screenshot "$out/camera-vivid.png" >"$out/camera-vivid.log" 2>&1
     rc=$?
     say "NOTE camera: 8 frames reflecting the cubemap took $((t1 - t0)) s, reflecting the camera $((SECONDS - t1)) s"
-    if [ "$rc" -ne 0 ]; then
+    if [ "$cubemap_rc" -ne 0 ]; then
+        say "FAIL camera-puddle: puddle reflecting the cubemap exited $cubemap_rc (log: camera-cubemap.log)"
+    elif [ "$rc" -ne 0 ]; then
         say "FAIL camera-puddle: puddle with the camera exited $rc (log: camera-vivid.log)"
     elif ! grep -q "camera: streaming" "$out/camera-vivid.log"; then
         say "FAIL camera-puddle: puddle never streamed from /dev/video0: $(grep -m1 -E '^(warning|error)' "$out/camera-vivid.log")"

@@ -13,9 +13,9 @@ out=/run/vm/out
 busybox=/run/vm/busybox
 serial=/dev/ttyS0
 # Every puddle started here compiles its shaders through Mesa's disk cache, kept by the host between runs
-# (tests/vm/run, PUDDLE_VM_SHADER_CACHE) and copied back at the end; the service gets a copy in its own
-# cache folder (service.sh). Mesa works on a copy in memory: pointed at the share itself it wrote only
-# its index there, no shader.
+# (tests/vm/run, PUDDLE_VM_SHADER_CACHE); what a run adds is copied back at the end. Mesa works on a copy
+# in memory: pointed at the share itself it wrote only its index there, no shader. The service has a
+# cache of its own, the unit's CacheDirectory (service.sh checks it).
 shader_store=/run/vm/shader-cache
 if [ "${VM_SHADER_CACHE:-0}" = 1 ] && mountpoint -q "$shader_store" && mkdir -p /run/vm/tmp/shader-cache &&
     cp -R "$shader_store/." /run/vm/tmp/shader-cache/ && touch /run/vm/tmp/shader-cache.copied; then
@@ -332,8 +332,10 @@ for t in $VM_TESTS; do
 done
 if [ -n "${MESA_SHADER_CACHE_DIR:-}" ]; then
     written=$(find "$MESA_SHADER_CACHE_DIR" -type f -newer /run/vm/tmp/shader-cache.copied | wc -l)
-    cp -R "$MESA_SHADER_CACHE_DIR/." "$shader_store/" ||
-        say "NOTE shader cache: copying it back to the host failed"
+    # Only what this run wrote: another VM may share the folder (a file is written whole, then renamed).
+    (cd "$MESA_SHADER_CACHE_DIR" && find . -type f -newer /run/vm/tmp/shader-cache.copied | while read -r f; do
+        mkdir -p "$shader_store/$(dirname "$f")" && cp "$f" "$shader_store/$f.tmp$$" && mv "$shader_store/$f.tmp$$" "$shader_store/$f"
+    done) || say "NOTE shader cache: copying it back to the host failed"
     say "NOTE shader cache: $written files written, $(find "$MESA_SHADER_CACHE_DIR" -type f | wc -l) in all"
 fi
 # The VM's journal, for whoever reads the results (build/vm-test/share/journal.txt).

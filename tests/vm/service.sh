@@ -5,6 +5,7 @@
 #   service-limit     a unit that cannot start (a config out of range: exit 2) stops after its start limit
 #   service-start     enable --now: active only after the first presented frame, under the hardening
 #   service-frame     (the host) the screen shows the frame a headless render gives
+#   service-cache     /var/cache/puddle (CacheDirectory) holds Mesa's shader cache
 #   service-journal   the start-up summary at priority info, no warning
 #   service-watchdog  kill -STOP: the watchdog kills it, systemd restarts it, the picture comes back
 #   service-reload    systemctl reload rereads the config; an edit applies on the next frames
@@ -135,12 +136,6 @@ svc_configure() {
         gpio=" --gpio mock:$svc_knobs"
     fi
     cp /etc/puddle/puddle.toml "$out/service.toml"
-    # The shaders the tests before compiled (guest.sh's MESA_SHADER_CACHE_DIR, kept between runs), in the
-    # unit's own cache folder: as on a board after its first start. Only the time to the first frame changes.
-    if [ -n "${MESA_SHADER_CACHE_DIR:-}" ] && [ "$(svc_show CacheDirectory)" = puddle ]; then
-        install -d -o puddle -g puddle -m 0750 /var/cache/puddle &&
-            cp -R "$MESA_SHADER_CACHE_DIR/." /var/cache/puddle/ && chown -R puddle:puddle /var/cache/puddle
-    fi
     local exec_start
     exec_start=$(grep -m1 '^ExecStart=' "$(svc_show FragmentPath)")
     mkdir -p /etc/systemd/system/$svc.d
@@ -232,6 +227,19 @@ svc_start() {
         say "PASS service-start: active $(((ready - started) / 1000)) ms after start, frame 1 on screen at $(((frame1 - started) / 1000)) ms; user puddle in video render input gpio, NoNewPrivs, seccomp filter, no capabilities"
     fi
     svc_screendump service-frame
+    # The unit's CacheDirectory: systemd made /var/cache/puddle for the user puddle, and Mesa keeps the
+    # shaders it compiled there (MESA_SHADER_CACHE_DIR), so a restart does not compile them again.
+    local cache=/var/cache/puddle files
+    files=$(find "$cache" -type f 2>/dev/null | wc -l)
+    if [ ! -d "$cache" ] || [ "$(stat -c %U "$cache")" != puddle ]; then
+        say "FAIL service-cache: no $cache owned by puddle (CacheDirectory=puddle): $(stat -c '%U %a' "$cache" 2>&1)"
+    elif ! tr '\0' '\n' <"/proc/$pid/environ" | grep -q -x "MESA_SHADER_CACHE_DIR=$cache"; then
+        say "FAIL service-cache: the process has no MESA_SHADER_CACHE_DIR=$cache"
+    elif [ "$files" -eq 0 ]; then
+        say "FAIL service-cache: Mesa wrote no shader to $cache after the first frames"
+    else
+        say "PASS service-cache: $cache (owner puddle) holds $files files of Mesa's shader cache after the first start"
+    fi
 }
 
 svc_journal() {
