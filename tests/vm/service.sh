@@ -108,8 +108,8 @@ svc_install() {
 # checkerboard ground (no procedural paving), few drops, a fixed seed and no adaptive scale (the
 # screen's refresh would lower the render scale while llvmpipe lags); the drop-in
 # also gives a board this slow more time: TimeoutStartSec (llvmpipe in an emulated CPU took 30 to 64 s
-# to its first frame with no shader cache) and WatchdogSec 15 (a frame takes 1.5 to 2.5 s here, about
-# 5 s beside the rest of ctest; systemd arms the watchdog only once start-up is complete). Without
+# to its first frame with no shader cache) and WatchdogSec 20 (a frame takes 1.5 to 2.5 s here, 4 to 8 s
+# beside the rest of ctest; systemd arms the watchdog only once start-up is complete). Without
 # a GPIO chip, a switch on puddle's mock GPIO backend (fed from svc_knobs) is the state check's knob; with
 # the gpio test's gpio-sim chip (tests/vm/gpio.sh, which runs before this and leaves it configured but not
 # live) it is a switch on that real chip, opened by the service as user puddle through the shipped udev
@@ -139,7 +139,7 @@ svc_configure() {
     local exec_start
     exec_start=$(grep -m1 '^ExecStart=' "$(svc_show FragmentPath)")
     mkdir -p /etc/systemd/system/$svc.d
-    printf '[Service]\nTimeoutStartSec=300\nWatchdogSec=15\nExecStart=\n%s --fixed-step --fps-cap %s --log-level debug%s\n' \
+    printf '[Service]\nTimeoutStartSec=300\nWatchdogSec=20\nExecStart=\n%s --fixed-step --fps-cap %s --log-level debug%s\n' \
         "$exec_start" "$VM_FPS" "$gpio" >/etc/systemd/system/$svc.d/vm-test.conf
     systemctl daemon-reload
 }
