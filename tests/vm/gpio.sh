@@ -100,12 +100,14 @@ fi
 gpio_mark() { gpio_from=$(($(wc -l <"$gpio_log") + 1)); }
 gpio_after() { tail -n "+$gpio_from" "$gpio_log"; }
 # Deadlines are wall-clock seconds: one poll can take long in a loaded emulated VM (the log is on 9p).
+# A poll starts three programs, which the VM's one emulated CPU takes from puddle: twice a second, not
+# ten times (at ten, the gpio part took twice as long).
 gpio_wait() {  # regex, seconds
     local end=$((SECONDS + $2))
     while [ $SECONDS -lt $end ]; do
         gpio_line=$(gpio_after | grep -E -m1 -- "$1") && return 0
         gpio_puddle_alive || { gpio_line=""; return 1; }
-        sleep 0.1
+        sleep 0.5
     done
     gpio_line=""
     return 1
@@ -117,7 +119,7 @@ gpio_wait_value() {  # param, value, seconds
     while [ $SECONDS -lt $end ]; do
         [ "$(gpio_value_of "$1")" = "$2" ] && return 0
         gpio_puddle_alive || return 1
-        sleep 0.1
+        sleep 0.5
     done
     return 1
 }
