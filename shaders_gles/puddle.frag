@@ -8,6 +8,9 @@
 // branch its neighbours disagree on, and llvmpipe runs both sides of every branch.
 //   METHOD_RAYMARCH: the reference's sphere-trace of the displaced box (render.march_steps reads);
 //                    otherwise meet the flat top analytically and refine once (1 read).
+//   SHORE:           puddle.shape = shore: the water's top is an endless plane of wet setts, water only
+//                    inside an irregular shoreline (shallower toward it), the setts darker and glossier
+//                    toward the water, everything fading into look.haze_color with distance.
 //   GROUND_PAVING:   the procedural setts, drawn here; GROUND_IMAGE: the ground is u_ground (ground.image);
 //                    neither: the checkerboard.
 //   GROUND_HIDDEN:   turbidity is so high that no ground can show through: no refraction at all.
@@ -34,13 +37,15 @@ uniform vec3 u_cam_up;
 uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1), of the whole view (v_uv spans it)
 uniform mat3 u_env_matrix;     // rotation about +Y by environment.rotation
 uniform float u_env_scale;     // 2^environment.exposure
-uniform vec2 u_slope_scale;    // world slope of the height per unit of (hR - hL, hU - hD): res / (2 size.xz)
+uniform vec4 u_surface_map;    // surface uv = xz * map.xy + map.zw: the puddle once, or a capillary tile repeated
+uniform vec2 u_slope_scale;    // world slope per unit of height difference (hR - hL, hU - hD) in world units:
+                               // texels per world unit / 2
+uniform float u_height_units;  // world units per unit of stored height
+uniform float u_normal_scale;  // normal's tilt per unit of (hL - hR, hD - hU)
 
 // Parameters, named after the registry (params.def).
 uniform vec3 u_puddle_size;
 uniform float u_puddle_depth;
-uniform float u_wave_height_scale;
-uniform float u_water_normal_strength;
 uniform float u_water_reflectivity;
 uniform float u_water_turbidity;
 uniform vec3 u_water_tint;
@@ -48,18 +53,23 @@ uniform float u_ground_scale;
 uniform float u_look_fog_density;
 uniform float u_look_vignette;
 uniform int u_render_march_steps;
+uniform vec3 u_look_haze_color;
+uniform vec4 u_shore;          // SHORE: the puddle's centre (x, z) and radii (x, z), world units
+uniform vec3 u_under_filter;   // SHORE: 0.7 * (1 - 0.5 * water.tint), what the water passes of the ground
+uniform float u_reflect_gain;      // SHORE: mix(0.3, 0.8, water.reflectivity) - 0.3, the reflection's Fresnel gain
 
 const float IOR = 1.333;
 
 vec3 surface_at(vec2 xz) {
-    vec2 uv = xz / u_puddle_size.xz + 0.5;
+    vec2 uv = xz * u_surface_map.xy + u_surface_map.zw;
     return decode_surface(texture(u_surface, uv).rgb);
 }
 
 float top() { return 0.5 * u_puddle_size.y; }
 
-vec3 environment(vec3 dir) {
-    vec4 texel = texture(u_env, u_env_matrix * dir);
+// bias: mip levels coarser than the footprint asks for, a rough surface's blur (0: a mirror).
+vec3 environment(vec3 dir, float bias) {
+    vec4 texel = texture(u_env, u_env_matrix * dir, bias);
 #ifdef ENV_RGBM
     return decode_rgbm(texel) * u_env_scale;
 #else
@@ -68,7 +78,7 @@ vec3 environment(vec3 dir) {
 }
 
 #ifdef METHOD_RAYMARCH
-float water_height(vec2 xz) { return top() + surface_at(xz).r * u_wave_height_scale; }
+float water_height(vec2 xz) { return top() + surface_at(xz).r * u_height_units; }
 
 // Slab intersection with the axis-aligned box of half size h.
 bool enter_box(vec3 o, vec3 d, vec3 h, out float t_near) {
@@ -90,7 +100,7 @@ float water_sdf(vec3 p) {
 
 bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
     float t;
-    vec3 bound = 0.5 * u_puddle_size + vec3(0.0, 4.0 * u_wave_height_scale, 0.0);  // widened by the displacement
+    vec3 bound = 0.5 * u_puddle_size + vec3(0.0, 4.0 * u_height_units, 0.0);  // widened by the displacement
     if (!enter_box(o, d, bound, t)) return false;
     for (int i = 0; i < 64; ++i) {
         if (i >= u_render_march_steps) break;
@@ -109,11 +119,15 @@ bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
 bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
     float down = min(d.y, -1e-4);
     p = o + ((top() - o.y) / down) * d;
+#ifdef SHORE
+    bool inside = d.y < 0.0;  // the plane goes on; the shoreline decides what is water
+#else
     bool inside = d.y < 0.0 && all(lessThanEqual(abs(p.xz), 0.5 * u_puddle_size.xz));
+#endif
     s = surface_at(p.xz);
-    vec2 slope = -s.gb * u_slope_scale * u_wave_height_scale;  // d(height)/dx, d(height)/dz in world units
+    vec2 slope = -s.gb * u_slope_scale * u_height_units;  // d(height)/dx, d(height)/dz in world units
     float closing = min(down - dot(slope, d.xz), 0.5 * down);  // how fast the ray meets the tilted plane
-    p += (s.r * u_wave_height_scale / closing) * d;
+    p += (s.r * u_height_units / closing) * d;
     return inside;
 }
 #endif
@@ -157,6 +171,16 @@ vec3 ground_colour(vec2 xz) {
 }
 #endif
 
+#ifdef SHORE
+// Where the shoreline is, in units of the puddle's radius: below 0 in the water, 0 on the waterline. An
+// ellipse bent by sines of incommensurate frequencies, so no stretch of shore repeats another.
+float shore_distance(vec2 xz) {
+    vec2 q = (xz - u_shore.xy) / u_shore.zw;
+    float wobble = 0.11 * sin(2.3 * q.x + 1.4 * sin(1.9 * q.y) + 0.7) + 0.06 * sin(4.1 * q.y - 1.1 * q.x + 2.0);
+    return length(q) - 1.0 + wobble;
+}
+#endif
+
 // What the water shows of the ground at p: refracted, fading into the tint with the path through the water
 // (Beer's law), then filtered by the water.
 vec3 seen_ground(vec3 p, vec3 d, vec3 n) {
@@ -177,11 +201,12 @@ void main() {
     vec3 o = u_camera_position;
     vec3 d = normalize(u_cam_forward + ndc.x * u_cam_scale.x * u_cam_right + ndc.y * u_cam_scale.y * u_cam_up);
 
-    // The sky is read once per pixel, along the reflected ray on the water and the view ray beyond it:
-    // the water's own light is added before, and fog scales both after.
+    // The sky is read once per pixel, along the reflected ray on the water (or wet ground) and the view
+    // ray beyond: the surface's own light is added before, and fog scales both after.
     vec3 look = d;           // where the sky is read
     float sky_share = 1.0;   // how much of it shows
-    vec3 own = vec3(0.0);    // the water's own light: ground and tint
+    float blur = 0.0;        // how rough the reflecting surface is (environment's bias)
+    vec3 own = vec3(0.0);    // the surface's own light: ground and tint
     float fog_keep = 1.0;    // the sky beyond the puddle is at infinity, unfogged
     vec3 p, s;
     bool water = hit_water(o, d, p, s);
@@ -192,10 +217,44 @@ void main() {
         p = vec3(0.0, top(), 0.0);
         s = vec3(0.0);
     }
+#ifdef SHORE
+    const float f0 = 0.020373;  // ((1 - IOR) / (1 + IOR))^2
+    // The plane is water inside the shoreline and wet setts beyond it; one ground read either way:
+    // refracted under the water, or where the ray meets the stones.
+    bool plane = water;
+    float shore = shore_distance(p.xz);
+    water = plane && shore < 0.0;
+    float wet = 1.0 - smoothstep(0.0, 0.3, shore);  // 1 at the waterline, drier away from it
+    vec3 n = water ? normalize(vec3(s.g * u_normal_scale, 1.0, s.b * u_normal_scale)) : vec3(0.0, 1.0, 0.0);
+    float x = 1.0 - abs(dot(d, n));
+    float x2 = x * x;
+    float fresnel = f0 + (1.0 - f0) * (x2 * x2 * x);
+    // Shallower toward the waterline, where the setts show through.
+    float floor_y = top() - 0.6 * (top() + u_puddle_depth) * (0.02 + 0.98 * smoothstep(0.0, 0.3, -shore));
+    vec3 t = refract(d, n, 1.0 / IOR);
+    float along = water ? (floor_y - p.y) / min(t.y, -1e-4) : 0.0;  // distance through the water
+    vec3 stones = ground_colour(p.xz + along * t.xz);
     if (water) {
-        vec3 n = normalize(vec3(s.g * u_water_normal_strength, 1.0, s.b * u_water_normal_strength));
+        sky_share = fresnel * u_reflect_gain + 0.3;
+        // Stones under water are darker, as wet ones are; then Beer's law and the water's filter.
+        vec3 under = mix(u_water_tint, 0.6 * stones, exp(-along * u_water_turbidity)) * u_under_filter;
+        own = under * (1.0 - sky_share) + 0.15 * u_water_tint * (1.0 - fresnel);
+    } else if (plane) {
+        // Wet setts: darker as water fills their pores, and toward the waterline a film that mirrors the
+        // lights, blurred as the stones are rough (the film smooths them near the water).
+        sky_share = mix(0.15, 0.75, wet) * fresnel;
+        blur = mix(5.0, 2.0, wet);
+        own = stones * mix(0.45, 0.22, wet) * (1.0 - sky_share);
+    }
+    if (plane) look = reflect(d, n);
+    vec3 colour = own + sky_share * environment(look, blur);
+    // The distance dissolves into the night's haze rather than ending at an edge.
+    if (plane) colour = mix(u_look_haze_color, colour, exp(-distance(o, p) * u_look_fog_density));
+#else
+    const float f0 = ((1.0 - IOR) / (1.0 + IOR)) * ((1.0 - IOR) / (1.0 + IOR));
+    if (water) {
+        vec3 n = normalize(vec3(s.g * u_normal_scale, 1.0, s.b * u_normal_scale));
 
-        const float f0 = ((1.0 - IOR) / (1.0 + IOR)) * ((1.0 - IOR) / (1.0 + IOR));
         float x = 1.0 - abs(dot(d, n));
         float x2 = x * x;
         float fresnel = f0 + (1.0 - f0) * (x2 * x2 * x);  // Schlick's (1 - cos)^5 without pow
@@ -207,7 +266,8 @@ void main() {
         own = seen_ground(p, d, n) * (1.0 - sky_share) + 0.15 * u_water_tint * (1.0 - fresnel);
         fog_keep = mix(0.7, 1.0, exp(-distance(o, p) * u_look_fog_density));
     }
-    vec3 colour = (own + sky_share * environment(look)) * fog_keep;
+    vec3 colour = (own + sky_share * environment(look, blur)) * fog_keep;
+#endif
 
     colour *= 1.0 - u_look_vignette * length(v_uv - 0.5);
     o_color = vec4(encode_srgb(tonemap(colour, TONEMAP)), 1.0);

@@ -1,6 +1,8 @@
 #version 300 es
 // Rain streaks over any scene (REFERENCE.md section 3): four parallax layers; each cuts the screen into tall
-// cells, and a cell, by its own hash, holds one thin streak or none. The pass blends by alpha.
+// cells, and a cell, by its own hash, holds one thin streak or none. The pass blends as light (Blend::Lit:
+// the target times 1 + this output): a streak lights up by what lies behind it, bright in front of lit
+// windows and their reflections, all but invisible against the dark, as rain at night is seen.
 precision highp float;
 precision highp int;
 
@@ -41,5 +43,6 @@ float layer(vec3 L, float fallen, uint salt) {
 void main() {
     float sum = 0.0;
     for (int i = 0; i < 4; ++i) sum += layer(LAYERS[i], u_layer_fall[i], uint(u_seed) * 8u + uint(i) * 2u);
-    o_color = vec4(u_overlay_rain_color, clamp(sum, 0.0, 1.0) * u_overlay_rain_opacity);
+    // At full opacity the nearest streak doubles what is behind it, tinted by overlay.rain_color.
+    o_color = vec4(u_overlay_rain_color * (clamp(sum, 0.0, 1.0) * u_overlay_rain_opacity / 0.9 * 1.25), 1.0);
 }

@@ -1,9 +1,25 @@
 #version 300 es
-// One step of the damped discrete 2D wave equation (REFERENCE.md section 1):
-//   next = 0.5 * (damping * (L + R + D + U - 2 * prev) + disturbance), stored as (next, current).
-// Edges clamp, so the border reflects. FIXED_POINT_SCALE selects the RG32I fallback field.
+// One step of the wave field, stored as (next, current).
+//
+// Reference (REFERENCE.md section 1): the damped discrete 2D wave equation,
+//   next = 0.5 * (damping * (L + R + D + U - 2 * prev) + disturbance); edges clamp, so the border reflects.
+//
+// CAPILLARY: ripples of rain on shallow water. A leapfrog step of
+//   h_tt = c^2 lap(h) - beta lap(lap(h)) + 2 nu lap(h_t) - drag h_t + sources,
+// whose plane waves obey w^2 = c^2 k^2 + beta k^4 (capillary-gravity dispersion, Lamb, Hydrodynamics
+// section 266, with c and beta fitted to centimetre ripples) and fade at 2 nu k^2 (viscous damping,
+// Lamb section 348). In texel units with the factors of u_step (systems/capillary_step.hpp):
+//   next = h + keep (h - prev) + a lap(h) - b lap2(h) + v lap(h - prev) + sources.
+// The field is periodic (it repeats across the puddle). Rain falls here, hashed per cell and time slot,
+// so any number of drops costs the same: each cell of the rain grid gets at most one drop per slot, with
+// probability u_rain.z, at a hashed place and time, of a Marshall-Palmer size; u_drops adds explicit ones.
+// FIXED_POINT_SCALE selects the RG32I fallback field.
 precision highp float;
 precision highp int;
+
+#ifdef CAPILLARY
+#include "hash.glsl"
+#endif
 
 #ifdef FIXED_POINT_SCALE
 uniform highp isampler2D u_field;
@@ -15,11 +31,15 @@ layout(location = 0) out vec2 o_field;
 vec2 load(ivec2 p) { return texelFetch(u_field, p, 0).rg; }
 #endif
 
-uniform float u_wave_damping;
 uniform int u_drop_count;
 layout(std140) uniform Drops {
-    vec4 u_drops[MAX_DROPS];  // x, y in texels; z = strength * activation
+    // reference: x, y in texels; z = strength * activation.
+    // CAPILLARY: x, y in texels; z = drop diameter in mm; w = seconds since it hit.
+    vec4 u_drops[MAX_DROPS];
 };
+
+#ifndef CAPILLARY
+uniform float u_wave_damping;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -45,3 +65,89 @@ void main() {
     o_field = vec2(next, here.r);
 #endif
 }
+#else
+uniform vec4 u_step;        // a, b, v, keep (systems/capillary_step.hpp)
+uniform vec4 u_drop_shape;  // texel size in mm, drop gain (height units per pass at the peak), seconds this
+                            // pass ends before the step (<= 0, added to u_drops' ages), 0
+uniform vec4 u_rain;        // cells per side, texels per cell, chance of a drop per cell and slot, Marshall-Palmer slope (1/mm)
+uniform int u_slot;         // the rain's time slot (RAIN_SLOT seconds each), wrapped to 2^20
+uniform float u_slot_time;  // seconds into it
+
+const float RAIN_SLOT = 0.25;  // seconds; a drop's impulse (at most 0.22 s) spans at most two slots
+
+ivec2 n_texels;
+vec2 at(ivec2 p) { return load((p + n_texels) % n_texels); }  // periodic; p is at most 2 texels outside
+
+// The impulse of a drop of diameter d (mm) t seconds after it hit, at r texels from it: a zero-mean ring
+// profile (the 2D Laplacian of a Gaussian, whose radius follows the drop) pushed by a few cycles of a
+// sine under a sin^2 window, lower for bigger drops. A zero-mean push leaves no lasting dent, so the
+// centre is calm once the train has left; the few cycles make the train of rings.
+float impulse(float r, float d, float t) {
+    float f = 20.0 * sqrt(2.0 / d);        // Hz
+    float duration = 3.0 / f;              // three cycles
+    if (t < 0.0 || t >= duration) return 0.0;
+    float radius = max(1.5 * d / u_drop_shape.x, 1.2);  // texels
+    float q = r * r / (radius * radius);
+    if (q > 9.0) return 0.0;
+    float space = (1.0 - 0.5 * q) * exp(-0.5 * q);
+    float window = sin(3.14159265 * t / duration);
+    float size = d * 0.5;
+    return u_drop_shape.y * size * sqrt(size) * space * window * window * sin(6.2831853 * f * t);
+}
+
+// A Marshall-Palmer diameter from 1 to 4 mm (an exponential of slope u_rain.w, truncated) for u in 0..1.
+float drop_diameter(float u) {
+    float lambda = u_rain.w;
+    return 1.0 - log(1.0 - u * (1.0 - exp(-3.0 * lambda))) / lambda;
+}
+
+float rain(vec2 p) {
+    float cells = u_rain.x, cell_texels = u_rain.y;
+    vec2 c = p / cell_texels - 0.5;  // the 2x2 cells whose drops can reach p (a drop reaches half a cell)
+    ivec2 c0 = ivec2(floor(c));
+    float sum = 0.0;
+    for (int k = 0; k < 2; ++k) {
+        uint slot = uint(u_slot - k) & 0xfffffu;
+        float since_slot = u_slot_time + float(k) * RAIN_SLOT;
+        for (int j = 0; j < 4; ++j) {
+            ivec2 cell = c0 + ivec2(j & 1, j >> 1);
+            ivec2 wrapped = (cell + int(cells)) % int(cells);
+            uint h = hash3(uint(wrapped.x), uint(wrapped.y), slot);
+            if (unit_float(h) >= u_rain.z) continue;
+            uint h2 = mix_bits(h + 1u), h3 = mix_bits(h + 2u), h4 = mix_bits(h + 3u), h5 = mix_bits(h + 4u);
+            vec2 spot = (vec2(cell) + vec2(unit_float(h2), unit_float(h3))) * cell_texels;
+            float t = since_slot - unit_float(h4) * RAIN_SLOT;
+            sum += impulse(distance(p, spot), drop_diameter(unit_float(h5)), t);
+        }
+    }
+    return sum;
+}
+
+void main() {
+    n_texels = textureSize(u_field, 0);
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec2 here = at(p);  // (current, previous)
+    vec2 l = at(p - ivec2(1, 0)), r = at(p + ivec2(1, 0)), d = at(p - ivec2(0, 1)), u = at(p + ivec2(0, 1));
+    vec2 lap = l + r + d + u - 4.0 * here;  // of the current (x) and previous (y) heights
+    float diagonals = at(p + ivec2(-1, -1)).r + at(p + ivec2(1, -1)).r + at(p + ivec2(-1, 1)).r +
+                      at(p + ivec2(1, 1)).r;
+    float far = at(p - ivec2(2, 0)).r + at(p + ivec2(2, 0)).r + at(p - ivec2(0, 2)).r + at(p + ivec2(0, 2)).r;
+    float lap2 = 20.0 * here.r - 8.0 * (l.r + r.r + d.r + u.r) + 2.0 * diagonals + far;
+
+    float next = here.r + u_step.w * (here.r - here.g) + u_step.x * lap.x - u_step.y * lap2 +
+                 u_step.z * (lap.x - lap.y);
+    vec2 centre = gl_FragCoord.xy;
+    if (u_rain.z > 0.0) next += rain(centre);
+    for (int i = 0; i < u_drop_count; ++i) {
+        vec4 drop = u_drops[i];
+        vec2 offset = centre - drop.xy;
+        offset -= vec2(n_texels) * round(offset / vec2(n_texels));  // the nearest of its periodic copies
+        next += impulse(length(offset), drop.z, drop.w + u_drop_shape.z);
+    }
+#ifdef FIXED_POINT_SCALE
+    o_field = ivec2(int(round(next * FIXED_POINT_SCALE)), texelFetch(u_field, p, 0).r);
+#else
+    o_field = vec2(next, here.r);
+#endif
+}
+#endif

@@ -45,7 +45,9 @@ DropSample sample_drop(std::uint32_t seed, int slot, std::int64_t cycle, float i
 void drop_system(const params::Params& params, const FrameClock& clock, ecs::World& world, DropSlots& slots,
                  LiveDrops& live) {
     using params::ParamId;
-    const int count = std::min(params.get<ParamId::rain_drop_count>(), max_drops);
+    // A capillary field's rain is hashed in its own shader (wave_step.frag): no cycling drops then.
+    const bool capillary = params.get<ParamId::wave_model>() == params::WaveModel::capillary;
+    const int count = capillary ? 0 : std::min(params.get<ParamId::rain_drop_count>(), max_drops);
     const double speed = params.get<ParamId::rain_speed>();
     const auto seed = static_cast<std::uint32_t>(params.get<ParamId::rain_seed>());
     const float intensity = params.get<ParamId::rain_intensity>();

@@ -1,5 +1,6 @@
 #pragma once
-// Drops (REFERENCE.md §1): drop i cycles once per unit of time scaled by rain.speed, at phase offset
+// Drops of the reference's wave model (REFERENCE.md §1; wave.model = capillary has none: its rain falls in
+// the wave shader): drop i cycles once per unit of time scaled by rain.speed, at phase offset
 // i * 0.3711; each cycle it lands at a new pseudo-random spot with a new strength, and its activation is a
 // bell over the cycle. Positions come from a seeded integer hash on the CPU, so every GPU shows the same
 // rain for a seed. Drops are entities; the live ones are packed for the wave pass.

@@ -7,6 +7,7 @@
 #include "systems/analytic_ripple_system.hpp"
 #include "systems/camera_environment.hpp"
 #include "systems/camera_system.hpp"
+#include "systems/capillary_step.hpp"
 #include "systems/drop_system.hpp"
 #include "systems/environment_system.hpp"
 #include "systems/frame_clock.hpp"
@@ -42,6 +43,7 @@ void hand_over_passes(Surface& from, Surface& to) {
     to.pipelines = std::move(from.pipelines);
     to.field_sampler = std::move(from.field_sampler);
     to.sampler = std::move(from.sampler);
+    to.tiled_sampler = std::move(from.tiled_sampler);
 }
 
 bool wants_fixed_point(const gpu::Device& device, const Params& params) {
@@ -66,9 +68,17 @@ Result<void> build_field_and_surface(gpu::Device& device, const Params& params, 
     }
     field = std::move(new_field);
     surface = std::move(new_surface);
-    spdlog::info("wave: {}x{} field, {} ({} steps/s)", field.resolution, field.resolution,
-                 field.fixed_point ? "fixed-point RG32I (no float render targets)" : "float RG32F",
-                 params.get<ParamId::wave_steps_per_second>());
+    const char* encoding = field.fixed_point ? "fixed-point RG32I (no float render targets)" : "float RG32F";
+    if (field.capillary)
+        spdlog::info("wave: {}x{} field, {}, capillary ripples over {:.2f} m ({:.1f} mm a texel, {} passes a "
+                     "step at {} steps/s)",
+                     field.resolution, field.resolution, encoding, static_cast<double>(params.get<ParamId::wave_size>()),
+                     1e3 * capillary_step(params, 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>())).texel_m,
+                     capillary_step(params, 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>())).substeps,
+                     static_cast<double>(params.get<ParamId::wave_steps_per_second>()));
+    else
+        spdlog::info("wave: {}x{} field, {}, the reference's wave equation ({} steps/s)", field.resolution,
+                     field.resolution, encoding, static_cast<double>(params.get<ParamId::wave_steps_per_second>()));
     return {};
 }
 
@@ -76,8 +86,10 @@ Result<void> build_field_and_surface(gpu::Device& device, const Params& params, 
 // cannot be made (too big for GPU memory) logs one line and keeps the old field, until the values change.
 void wave_rebuild_system(gpu::Device& device, const Params& params, WaveField& field, Surface& surface) {
     const bool want_fixed = wants_fixed_point(device, params);
-    const WaveField::Request wanted{params.get<ParamId::wave_resolution>(), want_fixed};
-    if (field.resolution == wanted.resolution && field.fixed_point == want_fixed) {
+    const bool want_capillary = params.get<ParamId::wave_model>() == params::WaveModel::capillary;
+    const WaveField::Request wanted{params.get<ParamId::wave_resolution>(), want_fixed, want_capillary};
+    if (field.resolution == wanted.resolution && field.fixed_point == want_fixed &&
+        field.capillary == want_capillary) {
         field.requested = {};  // back to what is shown: a later edit to the failed values tries again
         return;
     }

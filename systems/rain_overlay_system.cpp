@@ -12,7 +12,7 @@ gpu::PipelineDesc rain_desc() {
     return {.label = "rain streaks",
             .vertex = "view_window.vert",
             .fragment = "rain_streaks.frag",
-            .blend = gpu::Blend::Alpha};
+            .blend = gpu::Blend::Lit};
 }
 }  // namespace
 

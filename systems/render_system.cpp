@@ -7,6 +7,7 @@
 
 #include "render/param_uniforms.hpp"
 #include "render/view_basis.hpp"
+#include "systems/capillary_step.hpp"
 
 namespace puddle::systems {
 
@@ -23,6 +24,31 @@ gpu::PipelineDesc puddle_desc(const render::PuddleVariant& v, bool surface_unorm
 }
 
 }  // namespace
+
+SurfaceMapping surface_mapping(const params::Params& params, const Surface& surface) {
+    const float res = static_cast<float>(surface.resolution);
+    const double res_d = surface.resolution;
+    const bool tiled = &surface_sampler(params, surface) == &surface.tiled_sampler;
+    if (!tiled) {  // the reference: the field spans the puddle once, heights in wave.height_scale units
+        const glm::vec2 size(params.get<ParamId::puddle_size>().x, params.get<ParamId::puddle_size>().z);
+        return {.uv = glm::vec4(1.0f / size, 0.5f, 0.5f),
+                .slope_scale = res * 0.5f / size,
+                .height_units = params.get<ParamId::wave_height_scale>(),
+                .normal_scale = params.get<ParamId::water_normal_strength>()};
+    }
+    // Capillary: heights in 0.1 mm over texels of wave.size / res metres. The true slope of a difference
+    // of 2 texels is (hL - hR) * 0.1 mm / (2 dx); water.normal_strength scales it (1: as the physics has
+    // it; the default 2.5 makes shallow rings read from a few metres away).
+    const double metres_per_unit = static_cast<double>(params.get<ParamId::puddle_metres_per_unit>());
+    const double tile_units = static_cast<double>(params.get<ParamId::wave_size>()) / metres_per_unit;
+    const double texel_m = static_cast<double>(params.get<ParamId::wave_size>()) / res_d;
+    const float per_unit = static_cast<float>(1.0 / tile_units);
+    return {.uv = glm::vec4(per_unit, per_unit, 0.5f, 0.5f),
+            .slope_scale = glm::vec2(static_cast<float>(0.5 * res_d / tile_units)),
+            .height_units = static_cast<float>(capillary_height_unit_m / metres_per_unit),
+            .normal_scale = static_cast<float>(static_cast<double>(params.get<ParamId::water_normal_strength>()) *
+                                               capillary_height_unit_m / (2.0 * texel_m))};
+}
 
 const render::BuiltPipeline* PuddleRenderer::pipeline(gpu::Device& device, const render::PuddleVariant& v) {
     const bool was_ready = variants.find(v) != nullptr;
@@ -71,7 +97,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
 
     auto pass = device.begin_pass({.label = "puddle", .target = frame, .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(pipeline->pipeline)
-        .set_texture(0, surface.texture, surface.sampler)
+        .set_texture(0, surface.texture, surface_sampler(params, surface))
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
         .set_texture(2, ground.texture, ground.sampler);
     render::set_param_uniforms(pass, pipeline->params, params);
@@ -81,10 +107,18 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_up", cam.up)
         .set("u_cam_scale", cam.scale)
         .set("u_env_matrix", env_matrix)
-        .set("u_env_scale", std::exp2(params.get<ParamId::environment_exposure>()))
-        .set("u_slope_scale",
-             static_cast<float>(surface.resolution) * 0.5f /
-                 glm::vec2(params.get<ParamId::puddle_size>().x, params.get<ParamId::puddle_size>().z));
+        .set("u_env_scale", std::exp2(params.get<ParamId::environment_exposure>()));
+    const SurfaceMapping map = surface_mapping(params, surface);
+    pass.set("u_surface_map", map.uv)
+        .set("u_slope_scale", map.slope_scale)
+        .set("u_height_units", map.height_units)
+        .set("u_normal_scale", map.normal_scale);
+    // The shoreline's ellipse within the puddle's box, placed for the default camera: the far shore and
+    // both sides in view, the near water filling the bottom of the frame.
+    const glm::vec3 size = params.get<ParamId::puddle_size>();
+    pass.set("u_shore", glm::vec4(-0.05f * size.x, 0.08f * size.z, 0.34f * size.x, 0.3f * size.z))
+        .set("u_under_filter", 0.7f * (1.0f - 0.5f * params.get<ParamId::water_tint>()))
+        .set("u_reflect_gain", 0.5f * params.get<ParamId::water_reflectivity>());
     pass.draw_fullscreen();
 }
 

@@ -2,6 +2,9 @@
 // The puddle render pass: draws the scene for the camera into the frame target (REFERENCE.md §1).
 // environment_override: a cube sampled in place of env.cube (the camera environment while it streams).
 
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
 #include "render/pipeline_cache.hpp"
@@ -38,6 +41,17 @@ struct PuddleRenderer {
 };
 
 // Compiles the variant these parameters select, so a shader that does not build stops start-up.
+// How the render pass maps the surface onto the water (puddle.frag's u_surface_map and the rest):
+// uv = xz * uv.xy + uv.zw; the world slope per world unit of height difference over two texels; world
+// units per stored height unit; the normal's tilt per stored height difference.
+struct SurfaceMapping {
+    glm::vec4 uv{};
+    glm::vec2 slope_scale{};
+    float height_units = 0.0f;
+    float normal_scale = 0.0f;
+};
+SurfaceMapping surface_mapping(const params::Params& params, const Surface& surface);
+
 Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, const Environment& env,
                                    const params::Params& params, PuddleRenderer& renderer);
 

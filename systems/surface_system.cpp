@@ -5,12 +5,13 @@
 namespace puddle::systems {
 
 Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface& surface) {
-    const SurfaceVariant variant{!device.caps().half_float_render_targets, field.fixed_point};
+    const SurfaceVariant variant{!device.caps().half_float_render_targets, field.fixed_point, field.capillary};
     // A new resolution: the same shader, a new texture (see build_wave_field).
     if (auto built = surface.pipelines.ensure(device, variant,
                                               [&] {
                                                   std::vector<std::string> defines;
                                                   if (variant.unorm) defines.emplace_back("SURFACE_UNORM");
+                                                  if (variant.periodic) defines.emplace_back("PERIODIC");
                                                   if (variant.field_fixed_point)
                                                       defines.push_back(fmt::format(
                                                           "FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
@@ -26,17 +27,25 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
          .format = variant.unorm ? gpu::TextureFormat::RGBA8 : gpu::TextureFormat::RGBA16F,
          .width = field.resolution,
          .height = field.resolution,
+         .mip_levels = gpu::full_mip_count(field.resolution),
          .render_target = true});
     if (!texture) return texture.error();
     surface.texture = std::move(texture).value();
     surface.resolution = field.resolution;
     surface.unorm = variant.unorm;
     surface.field_fixed_point = variant.field_fixed_point;
+    surface.periodic = variant.periodic;
     if (surface.sampler.id() == 0) {
         surface.field_sampler = device.create_sampler(
             {.label = "field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
         surface.sampler = device.create_sampler(
             {.label = "surface", .min = gpu::Filter::Linear, .mag = gpu::Filter::Linear});
+        surface.tiled_sampler = device.create_sampler({.label = "tiled surface",
+                                                       .min = gpu::Filter::Linear,
+                                                       .mag = gpu::Filter::Linear,
+                                                       .mipmaps = true,
+                                                       .wrap = gpu::Wrap::Repeat,
+                                                       .anisotropy = 4.0f});
     }
     return {};
 }
@@ -49,6 +58,13 @@ void surface_system(gpu::Device& device, const WaveField& field, Surface& surfac
                                    .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(built->pipeline).set_texture(0, field.newest(), surface.field_sampler);
     pass.draw_fullscreen();
+    if (surface.periodic) surface.texture.generate_mipmaps();
+}
+
+const gpu::Sampler& surface_sampler(const params::Params& params, const Surface& surface) {
+    const bool tiled = params.get<params::ParamId::wave_model>() == params::WaveModel::capillary &&
+                       params.get<params::ParamId::drops_model>() == params::DropsModel::pulse;
+    return tiled ? surface.tiled_sampler : surface.sampler;
 }
 
 }  // namespace puddle::systems

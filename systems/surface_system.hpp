@@ -1,7 +1,8 @@
 #pragma once
 // Once per displayed frame, after the simulation steps: turns the newest wave field into the surface
 // texture the render pass samples (height and slopes, filterable: RGBA16F, or RGBA8 where half-float
-// targets are missing).
+// targets are missing). The texture has a full mip chain: a capillary field repeats across the puddle
+// and is read trilinear, so rings thinner than a pixel far away average out instead of shimmering.
 
 #include <cstddef>
 
@@ -16,29 +17,37 @@ namespace puddle::systems {
 struct SurfaceVariant {
     bool unorm = false;
     bool field_fixed_point = false;
+    bool periodic = false;  // a capillary field: its differences wrap around the edges
 };
 constexpr std::size_t surface_variant_index(const SurfaceVariant& v) {
-    return (v.unorm ? 2u : 0u) + (v.field_fixed_point ? 1u : 0u);
+    return (v.periodic ? 4u : 0u) + (v.unorm ? 2u : 0u) + (v.field_fixed_point ? 1u : 0u);
 }
 // One pipeline per variant, built on first use and kept through resolution changes.
-using SurfacePipelines = render::PipelineCache<SurfaceVariant, 4, surface_variant_index>;
+using SurfacePipelines = render::PipelineCache<SurfaceVariant, 8, surface_variant_index>;
 
 // Resource.
 struct Surface {
     gpu::Texture texture;
     SurfacePipelines pipelines;
     gpu::Sampler field_sampler;  // nearest, for the field
-    gpu::Sampler sampler;        // linear, clamp: how the render pass reads the surface
+    gpu::Sampler sampler;        // linear, clamp: how the render pass reads a surface spanning the puddle
+    gpu::Sampler tiled_sampler;  // trilinear, repeat: a capillary field repeating across the puddle
     int resolution = 0;
     bool unorm = false;  // RGBA8 fallback encoding (SURFACE_UNORM in the shaders)
     bool field_fixed_point = false;
+    bool periodic = false;
 
-    SurfaceVariant variant() const { return {unorm, field_fixed_point}; }
+    SurfaceVariant variant() const { return {unorm, field_fixed_point, periodic}; }
 };
 
 // Makes (or remakes) the surface texture for `field`'s size and encoding, keeping the pipelines. On an
 // error `surface` is left as it was.
 Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface& surface);
+// Renders level 0 and, for a capillary field, the mip chain below it.
 void surface_system(gpu::Device& device, const WaveField& field, Surface& surface);
+
+// The sampler the render pass reads `surface` with: repeating and trilinear for a capillary field
+// (wave.model, drops.model = pulse), otherwise clamped and bilinear, as the reference.
+const gpu::Sampler& surface_sampler(const params::Params& params, const Surface& surface);
 
 }  // namespace puddle::systems

@@ -12,9 +12,10 @@
 
 namespace puddle::gpu {
 
-// How the pass's output meets what the target holds: replace it, or blend by the output's alpha
-// (overlays drawn over a finished frame).
-enum class Blend { Replace, Alpha };
+// How the pass's output meets what the target holds: replace it; blend by the output's alpha (overlays
+// drawn over a finished frame); or Lit: target * (1 + output), so what is drawn shows as light in
+// proportion to what lies behind it (rain streaks catching the scene's light: glBlendFunc(DST_COLOR, ONE)).
+enum class Blend { Replace, Alpha, Lit };
 
 struct PipelineDesc {
     std::string label;

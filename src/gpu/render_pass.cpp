@@ -44,6 +44,9 @@ RenderPass& RenderPass::set_pipeline(const Pipeline& pipeline) {
         glEnable(GL_BLEND);
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO,
                             GL_ONE);  // keep the target's alpha
+    } else if (pipeline.blend() == Blend::Lit) {
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_DST_COLOR, GL_ONE, GL_ZERO, GL_ONE);
     } else {
         glDisable(GL_BLEND);
     }

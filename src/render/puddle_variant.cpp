@@ -32,7 +32,9 @@ bool ground_hidden(const params::Params& params) {
 PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm) {
     PuddleVariant v;
     v.raymarch = params.get<ParamId::render_method>() == params::RenderMethod::raymarch;
-    v.ground = ground_hidden(params)                         ? GroundKind::Hidden
+    v.shore = !v.raymarch && params.get<ParamId::puddle_shape>() == params::PuddleShape::shore;
+    // Beside a shore the ground shows whatever the water hides.
+    v.ground = (ground_hidden(params) && !v.shore)           ? GroundKind::Hidden
                : params.get<ParamId::ground_checkerboard>()  ? GroundKind::Checkerboard
                : params.get<ParamId::ground_image>().empty() ? GroundKind::Paving
                                                              : GroundKind::Image;
@@ -43,6 +45,7 @@ PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm)
 
 std::size_t variant_index(const PuddleVariant& v) {
     std::size_t i = v.raymarch ? 1 : 0;
+    i = i * 2 + (v.shore ? 1 : 0);
     i = i * ground_kind_count + static_cast<std::size_t>(v.ground);
     i = i * 2 + (v.env_rgbm ? 1 : 0);
     return i * tonemap_count + static_cast<std::size_t>(v.tonemap);
@@ -52,6 +55,7 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
     std::vector<std::string> d;
     if (surface_unorm) d.emplace_back("SURFACE_UNORM");
     if (v.raymarch) d.emplace_back("METHOD_RAYMARCH");
+    if (v.shore) d.emplace_back("SHORE");
     if (v.ground == GroundKind::Paving) d.emplace_back("GROUND_PAVING");
     if (v.ground == GroundKind::Image) d.emplace_back("GROUND_IMAGE");
     if (v.ground == GroundKind::Hidden) d.emplace_back("GROUND_HIDDEN");
@@ -62,7 +66,7 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
 
 std::string describe(const PuddleVariant& v) {
     static constexpr const char* grounds[] = {"checkerboard", "paving", "ground image", "ground hidden"};
-    return fmt::format("{}, {}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect",
+    return fmt::format("{}{}, {}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect", v.shore ? ", shore" : "",
                        grounds[static_cast<int>(v.ground)], v.env_rgbm ? ", RGBM sky" : "",
                        params::choice_name(v.tonemap));
 }

@@ -21,6 +21,7 @@ inline constexpr std::size_t ground_kind_count = 4;
 
 struct PuddleVariant {
     bool raymarch = false;
+    bool shore = false;  // puddle.shape = shore (with the intersect method only)
     GroundKind ground = GroundKind::Checkerboard;
     bool env_rgbm = false;
     params::Tonemap tonemap = params::Tonemap::clip;  // its index is TONEMAP_* in colour.glsl
@@ -29,7 +30,7 @@ struct PuddleVariant {
 };
 
 inline constexpr std::size_t tonemap_count = params::choice_count<params::Tonemap>;
-inline constexpr std::size_t puddle_variant_count = 2 * ground_kind_count * 2 * tonemap_count;
+inline constexpr std::size_t puddle_variant_count = 2 * 2 * ground_kind_count * 2 * tonemap_count;
 
 // True when turbidity leaves the ground less than 1/4096 of its brightness even along the shortest path
 // through the water (straight down from the highest crest): then the refraction is skipped, and the

@@ -22,13 +22,13 @@ TEST(ParamLayers, PrecedenceDefaultPresetConfigKnobCommandLine) {
     auto set = parse_assignment("rain.speed=7");
     ASSERT_TRUE(set);
     ParamLayers l = layers({*set});
-    // downpour sets drop_count 100, intensity 0.2, speed 2.5, fog 0.02.
+    // downpour sets rate 14, drift 0.3, intensity 0.25, fog 0.02.
     ASSERT_TRUE(l.set_config(
         config("preset = \"downpour\"\n[rain]\nintensity = 0.6\nspeed = 3.0\n[look]\nfog_density = 0.05\n")));
     l.set_knob(ParamId::look_fog_density, 0.1f);
     const Params p = l.compose();
-    EXPECT_EQ(p.get<ParamId::rain_drop_count>(), 100);
-    EXPECT_EQ(p.source(ParamId::rain_drop_count), ParamSource::Preset);
+    EXPECT_FLOAT_EQ(p.get<ParamId::rain_rate>(), 14.0f);
+    EXPECT_EQ(p.source(ParamId::rain_rate), ParamSource::Preset);
     EXPECT_FLOAT_EQ(p.get<ParamId::rain_intensity>(), 0.6f);  // config over preset
     EXPECT_EQ(p.source(ParamId::rain_intensity), ParamSource::Config);
     EXPECT_FLOAT_EQ(p.get<ParamId::look_fog_density>(), 0.1f);  // knob over config
@@ -40,12 +40,12 @@ TEST(ParamLayers, PrecedenceDefaultPresetConfigKnobCommandLine) {
 
 TEST(ParamLayers, ARemovedConfigLineFallsBackToThePresetThenTheDefault) {
     ParamLayers l = layers();
-    ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n[rain]\ndrop_count = 3\n")));
-    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 3);
+    ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n[rain]\nrate = 3.5\n")));
+    EXPECT_FLOAT_EQ(l.compose().get<ParamId::rain_rate>(), 3.5f);
     ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n")));
-    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 100);
+    EXPECT_FLOAT_EQ(l.compose().get<ParamId::rain_rate>(), 14.0f);
     ASSERT_TRUE(l.set_config(config("")));
-    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 16);
+    EXPECT_FLOAT_EQ(l.compose().get<ParamId::rain_rate>(), 3.0f);
 }
 
 TEST(ParamLayers, UnknownPresetIsRejectedWithFileLineAndTheChoices) {
@@ -73,7 +73,7 @@ TEST(ParamLayers, AKnobPresetWinsOverTheConfigsAndClearingItGoesBack) {
     ASSERT_TRUE(l.set_config(config("preset = \"downpour\"\n")));
     ASSERT_TRUE(l.select_preset("drizzle"));
     EXPECT_EQ(l.preset_name(), "drizzle");
-    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 5);
+    EXPECT_FLOAT_EQ(l.compose().get<ParamId::rain_rate>(), 0.4f);
     ASSERT_TRUE(l.set_config(config("preset = \"mirror\"\n")));  // a reload keeps the knob's choice
     EXPECT_EQ(l.preset_name(), "drizzle");
     ASSERT_TRUE(l.select_preset(""));

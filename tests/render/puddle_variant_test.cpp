@@ -40,6 +40,9 @@ TEST(PuddleVariant, DefaultsSelectTheCheapPath) {
 
 TEST(PuddleVariant, EachParameterPicksItsVariant) {
     EXPECT_TRUE(choose_puddle_variant(with({"render.method=raymarch"}), false).raymarch);
+    EXPECT_TRUE(choose_puddle_variant(with({}), false).shore);
+    EXPECT_FALSE(choose_puddle_variant(with({"puddle.shape=box"}), false).shore);
+    EXPECT_FALSE(choose_puddle_variant(with({"render.method=raymarch"}), false).shore) << "intersect only";
     EXPECT_EQ(choose_puddle_variant(with({"ground.checkerboard=true"}), false).ground,
               GroundKind::Checkerboard);
     EXPECT_EQ(choose_puddle_variant(with({"ground.image=/srv/stones.jpg"}), false).ground, GroundKind::Image);
@@ -64,19 +67,26 @@ TEST(PuddleVariant, GroundHiddenOnlyWhenTurbidityLeavesNothingVisible) {
     EXPECT_TRUE(ground_hidden(with({"water.turbidity=0.5", "puddle.depth=20"})));
     EXPECT_FALSE(ground_hidden(with({"water.turbidity=1.2", "wave.height_scale=2"})));
     const PuddleVariant v =
-        choose_puddle_variant(with({"water.turbidity=2", "ground.checkerboard=false"}), false);
+        choose_puddle_variant(with({"water.turbidity=2", "ground.checkerboard=false", "puddle.shape=box"}), false);
     EXPECT_EQ(v.ground, GroundKind::Hidden);  // whatever the ground is, none of it shows
+    // Beside a shore the ground shows whatever the water hides.
+    const PuddleVariant shore =
+        choose_puddle_variant(with({"water.turbidity=2", "ground.checkerboard=false"}), false);
+    EXPECT_TRUE(shore.shore);
+    EXPECT_EQ(shore.ground, GroundKind::Paving);
 }
 
 TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
     std::set<std::size_t> slots;
     std::set<std::vector<std::string>> defines;
     for (bool raymarch : {false, true})
+      for (bool shore : {false, true})
         for (GroundKind g :
              {GroundKind::Checkerboard, GroundKind::Paving, GroundKind::Image, GroundKind::Hidden})
             for (bool rgbm : {false, true})
                 for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
                     const PuddleVariant v{.raymarch = raymarch,
+                                          .shore = shore,
                                           .ground = g,
                                           .env_rgbm = rgbm,
                                           .tonemap = static_cast<params::Tonemap>(t)};
@@ -86,6 +96,7 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
                     const auto d = variant_defines(v, false);
                     defines.insert(d);
                     EXPECT_EQ(has(d, "METHOD_RAYMARCH"), raymarch);
+                    EXPECT_EQ(has(d, "SHORE"), shore);
                     EXPECT_EQ(has(d, "GROUND_PAVING"), g == GroundKind::Paving);
                     EXPECT_EQ(has(d, "GROUND_IMAGE"), g == GroundKind::Image);
                     EXPECT_EQ(has(d, "GROUND_HIDDEN"), g == GroundKind::Hidden);

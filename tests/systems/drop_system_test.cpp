@@ -27,7 +27,11 @@ struct Seen {
 
 // The drop system with everything it reads and writes, stepped as the simulate stage would.
 struct Rain {
-    explicit Rain(int seed = 1) { params.set(ParamId::rain_seed, seed, ParamSource::CommandLine); }
+    // The cycling drops are the reference wave model's (a capillary field's rain falls in its shader).
+    explicit Rain(int seed = 1) {
+        params.set(ParamId::rain_seed, seed, ParamSource::CommandLine);
+        params.set<ParamId::wave_model>(params::WaveModel::reference, ParamSource::CommandLine);
+    }
 
     void step() {
         begin_step_system(clock);
@@ -291,6 +295,18 @@ TEST(DropSystem, DropsAreAFunctionOfSeedParametersAndStepAlone) {
             ASSERT_EQ(ran_all_along.live.drops[static_cast<std::size_t>(d)],
                       starts_now.live.drops[static_cast<std::size_t>(d)]);
     }
+}
+
+// wave.model = capillary: its rain is hashed in the wave shader, so drop_system leaves no drops and no
+// entities, whatever rain.drop_count says.
+TEST(DropSystem, ACapillaryFieldHasNoCyclingDrops) {
+    Rain rain;
+    for (int i = 0; i < 30; ++i) rain.step();
+    ASSERT_GT(rain.live.count, 0);
+    ASSERT_TRUE(rain.params.set<ParamId::wave_model>(params::WaveModel::capillary, ParamSource::CommandLine));
+    rain.step();
+    EXPECT_EQ(rain.live.count, 0);
+    EXPECT_TRUE(rain.drops().empty());
 }
 
 }  // namespace

@@ -23,20 +23,21 @@ struct GoldenCase {
 constexpr glm::ivec2 golden_size{480, 270};
 
 TEST(Golden, DefaultNightPuddle) {
-    check_golden("default", render_with({}, 90, golden_size));
+    // The program's own defaults throughout (the README shows this picture).
+    check_golden("default", render_with({"wave.resolution=512", "wave.size=1.6"}, 90, golden_size));
 }
 
 TEST(Golden, MurkyPondOnCobblesRaymarched) {
     check_golden(
         "murky_pond",
         render_with({"ground.checkerboard=false", "water.turbidity=0.08", "water.tint=0.05,0.09,0.04",
-                     "puddle.depth=8", "render.method=raymarch", "rain.drop_count=6", "wave.damping=0.995"},
+                     "puddle.depth=8", "render.method=raymarch", "rain.rate=1.5"},
                     90, golden_size));
 }
 
 TEST(Golden, DownpourMirrorTurnedSky) {
     check_golden("downpour",
-                 render_with({"rain.drop_count=100", "rain.intensity=0.2", "rain.speed=2.5",
+                 render_with({"rain.rate=14", "rain.drift=0.3", "rain.intensity=0.25",
                               "water.reflectivity=1", "environment.rotation=2.5", "look.fog_density=0.02",
                               "look.vignette=0.8", "camera.position=25,10,0", "camera.target=-40,2,0"},
                              90, golden_size));
@@ -50,7 +51,7 @@ TEST(Golden, HdrCityLightsInTheRain) {
     write_float_image(sky, city_lights_panorama(1024));
     check_golden("hdr_city_lights",
                  render_with({"environment.image=" + sky, "camera.position=0,9,34", "camera.target=0,3,-10",
-                              "rain.drop_count=24", "water.reflectivity=1", "ground.checkerboard=false",
+                              "rain.rate=4", "water.reflectivity=1", "ground.checkerboard=false",
                               "look.fog_density=0.004"},
                              90, golden_size));
 }

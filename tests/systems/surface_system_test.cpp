@@ -1,6 +1,7 @@
 // The surface pass (systems/surface_system.hpp): each surface texel holds the field's height there and its
-// central differences one texel apart (hL - hR, hD - hU), clamped at the edges, as surface.frag says and
-// the render pass relies on. Checked texel by texel against the field read back from the GPU.
+// central differences one texel apart (hL - hR, hD - hU), clamped at the edges (the reference's field)
+// or wrapped around them (a capillary field, which repeats), as surface.frag says and the render pass
+// relies on. Checked texel by texel against the field read back from the GPU.
 #include "systems/surface_system.hpp"
 
 #include <gtest/gtest.h>
@@ -30,34 +31,59 @@ std::vector<SurfaceTexel> read_surface(app::Engine& e) {
     return out;
 }
 
-TEST(SurfaceSystem, HoldsTheHeightAndItsCentralDifferencesClampedAtTheEdges) {
-    auto e = make_engine(make_params({"wave.resolution=" + std::to_string(N), "rain.intensity=0"}), {32, 18});
-    ASSERT_TRUE(e);
-    step(*e, {{20.5f, 30.5f, 1.0f}, {2.5f, 61.5f, -0.5f}});  // one drop near an edge, to test the clamp
-    for (int i = 0; i < 12; ++i) step(*e);
-    auto& w = e->world();
-    systems::surface_system(e->device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());
-    const Field f = read_field(*e);
-    const std::vector<SurfaceTexel> s = read_surface(*e);
+// Compares every surface texel with the field read back; `periodic`: differences wrap around the edges.
+void expect_surface_matches_field(app::Engine& e, bool periodic) {
+    auto& w = e.world();
+    systems::surface_system(e.device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());
+    const Field f = read_field(e);
+    const std::vector<SurfaceTexel> s = read_surface(e);
     ASSERT_EQ(s.size(), std::size_t(N) * N);
     const bool unorm = w.resource<systems::Surface>().unorm;
     const double tolerance = unorm ? 8.0 / 254.0 : 2e-3;  // a byte step of [-4, 4], or half-float rounding
-    auto h = [&](int x, int y) { return f.cur(std::clamp(x, 0, N - 1), std::clamp(y, 0, N - 1)); };
-    double peak = 0, worst = 0;
+    auto edge = [&](int i) { return periodic ? (i + N) % N : std::clamp(i, 0, N - 1); };
+    auto h = [&](int x, int y) { return f.cur(edge(x), edge(y)); };
+    double peak = 0, worst = 0, edge_peak = 0;
     for (int y = 0; y < N; ++y)
         for (int x = 0; x < N; ++x) {
             const SurfaceTexel& t = s[std::size_t(y) * N + x];
             peak = std::max(peak, std::abs(h(x, y)));
+            if (x == 0 || y == 0 || x == N - 1 || y == N - 1) edge_peak = std::max(edge_peak, std::abs(h(x, y)));
             worst =
                 std::max({worst, std::abs(t.height - h(x, y)), std::abs(t.dx - (h(x - 1, y) - h(x + 1, y))),
                           std::abs(t.dz - (h(x, y - 1) - h(x, y + 1)))});
         }
     ASSERT_GT(peak, 0.01) << "the drops made waves";
+    ASSERT_GT(edge_peak, 0.1 * peak) << "waves at the edges, where clamping and wrapping differ";
     EXPECT_LT(worst, tolerance * std::max(1.0, peak));
 }
 
+TEST(SurfaceSystem, HoldsTheHeightAndItsCentralDifferencesClampedAtTheEdges) {
+    auto e = make_engine(make_params({"wave.model=reference", "wave.resolution=" + std::to_string(N),
+                                      "rain.intensity=0"}),
+                         {32, 18});
+    ASSERT_TRUE(e);
+    step(*e, {{20.5f, 30.5f, 1.0f}, {2.5f, 61.5f, -0.5f}});  // one drop near an edge, to test the clamp
+    for (int i = 0; i < 12; ++i) step(*e);
+    expect_surface_matches_field(*e, false);
+}
+
+TEST(SurfaceSystem, WrapsTheDifferencesAroundTheEdgesOfACapillaryField) {
+    // Heavy rain over a 20 cm field: ripples everywhere, the edges included.
+    auto e = make_engine(make_params({"wave.model=capillary", "wave.resolution=" + std::to_string(N),
+                                      "wave.size=0.2", "rain.rate=30", "rain.drift=0"}),
+                         {32, 18});
+    ASSERT_TRUE(e);
+    for (int i = 0; i < 30; ++i) {
+        begin_step_system(e->world().resource<systems::FrameClock>());
+        step(*e);
+    }
+    expect_surface_matches_field(*e, true);
+}
+
 TEST(SurfaceSystem, StillWaterIsFlatInEveryTexel) {
-    auto e = make_engine(make_params({"wave.resolution=" + std::to_string(N), "rain.intensity=0"}), {32, 18});
+    auto e = make_engine(make_params({"wave.model=reference", "wave.resolution=" + std::to_string(N),
+                                      "rain.intensity=0"}),
+                         {32, 18});
     ASSERT_TRUE(e);
     auto& w = e->world();
     systems::surface_system(e->device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());

@@ -16,7 +16,8 @@ constexpr float C = 64.5f;  // the centre of texel 64: the impulse is symmetric 
 
 std::unique_ptr<app::Engine> quiet_engine(float damping) {
     return make_engine(make_params({"wave.resolution=" + std::to_string(N),
-                                    "wave.damping=" + std::to_string(damping), "rain.intensity=0"}),
+                                    "wave.model=reference", "wave.damping=" + std::to_string(damping),
+                                    "rain.intensity=0"}),
                        {32, 18});
 }
 
@@ -36,7 +37,7 @@ TEST(WaveSystem, ImpulseSpreadsAsARingAtTheSchemeSpeed) {
 
 namespace {
 unsigned step_program_of(const systems::WaveField& field) {
-    const render::BuiltPipeline* p = field.step_pipelines.find(field.encoding());
+    const render::BuiltPipeline* p = field.step_pipelines.find(field.variant());
     return p ? p->pipeline.id() : 0;
 }
 unsigned surface_program_of(const systems::Surface& surface) {
@@ -54,7 +55,7 @@ TEST(WaveSystem, NewResolutionKeepsTheCompiledPipelinesAndGivesAFlatFieldOfTheNe
     auto& surface = e->world().resource<systems::Surface>();
     const unsigned step_program = step_program_of(field), surface_program = surface_program_of(surface);
     step(*e, {{C, C, 1.0f}});
-    auto params = make_params({"wave.resolution=96"});
+    auto params = make_params({"wave.model=reference", "wave.resolution=96"});
     ASSERT_TRUE(systems::build_wave_field(e->device(), params, field));
     ASSERT_TRUE(systems::build_surface(e->device(), field, surface));
     EXPECT_EQ(step_program_of(field), step_program);

@@ -1,0 +1,32 @@
+#pragma once
+// The factors of one capillary wave step (shaders_gles/wave_step.frag, CAPILLARY) and how many such
+// steps a fixed simulation step takes, from the physical parameters. The equation, in metres and seconds:
+//   h_tt = c^2 lap(h) - beta lap(lap(h)) + 2 nu lap(h_t) - drag h_t
+// (c: wave.ring_speed, beta: wave.dispersion, nu: wave.viscosity, drag: wave.drag; plane waves obey
+// w^2 = c^2 k^2 + beta k^4 and fade at 2 nu k^2 + drag / 2; Lamb, Hydrodynamics, sections 266 and 348).
+// The explicit leapfrog is stable while dt^2 (8 c^2 / dx^2 + 64 beta / dx^4) < 4 (the checkerboard
+// mode's eigenvalues of the 5- and 13-point stencils) and 16 nu dt / dx^2 < 1; substeps keeps both
+// under 70% of the limit.
+
+#include "params/param_store.hpp"
+
+namespace puddle::systems {
+
+// Heights of the capillary field are in units of 0.1 mm: the ripples are fractions of a millimetre,
+// which keeps them well inside the RG32I fallback's and the RGBA8 surface's ranges.
+inline constexpr double capillary_height_unit_m = 1e-4;
+
+struct CapillaryStep {
+    int substeps = 1;         // wave passes per fixed simulation step
+    double dt = 0.0;          // seconds per pass
+    double texel_m = 0.0;     // dx: wave.size / wave.resolution
+    float a = 0.0f;           // c^2 dt^2 / dx^2
+    float b = 0.0f;           // beta dt^2 / dx^4
+    float v = 0.0f;           // 2 nu dt / dx^2
+    float keep = 1.0f;        // 1 - drag dt: the share of the last pass's motion kept
+};
+
+// For a fixed step of step_seconds at these parameters (wave.resolution, wave.size and the rest).
+CapillaryStep capillary_step(const params::Params& params, double step_seconds);
+
+}  // namespace puddle::systems
