@@ -78,7 +78,12 @@ vec3 environment(vec3 dir, float bias) {
 }
 
 #ifdef METHOD_RAYMARCH
-float water_height(vec2 xz) { return top() + surface_at(xz).r * u_height_units; }
+// The finest level: inside the march's loop there are no derivatives to choose a level by, and a
+// filtered (anisotropic) read per step is what makes the march slow.
+float water_height(vec2 xz) {
+    vec2 uv = xz * u_surface_map.xy + u_surface_map.zw;
+    return top() + decode_surface(textureLod(u_surface, uv, 0.0).rgb).r * u_height_units;
+}
 
 // Slab intersection with the axis-aligned box of half size h.
 bool enter_box(vec3 o, vec3 d, vec3 h, out float t_near) {

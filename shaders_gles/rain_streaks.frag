@@ -17,6 +17,7 @@ uniform vec4 u_layer_fall;
 uniform vec2 u_resolution;    // the whole view (a whole video wall) in pixels of this target
 uniform int u_seed;
 uniform float u_overlay_rain_density;
+uniform float u_streak_strength;  // the rain's current strength as a factor of the density (rain_overlay_system.hpp)
 uniform float u_overlay_rain_speed;
 uniform vec3 u_overlay_rain_color;
 uniform float u_overlay_rain_opacity;
@@ -30,7 +31,7 @@ float layer(vec3 L, float fallen, uint salt) {
     vec2 p = v_uv * cells;
     ivec2 cell = ivec2(floor(p));
     vec2 local = fract(p);
-    float present = step(hash_cell(cell, salt), L.y * u_overlay_rain_density);
+    float present = step(hash_cell(cell, salt), L.y * u_overlay_rain_density * u_streak_strength);
     float offset = hash_cell(cell, salt + 1u);
     // A streak a tenth of a cell wide, never thinner than about a pixel (thinner would flicker).
     float half_width = max(0.05, 0.6 * cells.x / u_resolution.x);

@@ -67,6 +67,7 @@ void main() {
 }
 #else
 uniform vec4 u_step;        // a, b, v, keep (systems/capillary_step.hpp)
+uniform float u_level;      // w0^2 dt^2: the pull back to the water's level
 uniform vec4 u_drop_shape;  // texel size in mm, drop gain (height units per pass at the peak), seconds this
                             // pass ends before the step (<= 0, added to u_drops' ages), 0
 uniform vec4 u_rain;        // cells per side, texels per cell, chance of a drop per cell and slot, Marshall-Palmer slope (1/mm)
@@ -135,7 +136,7 @@ void main() {
     float lap2 = 20.0 * here.r - 8.0 * (l.r + r.r + d.r + u.r) + 2.0 * diagonals + far;
 
     float next = here.r + u_step.w * (here.r - here.g) + u_step.x * lap.x - u_step.y * lap2 +
-                 u_step.z * (lap.x - lap.y);
+                 u_step.z * (lap.x - lap.y) - u_level * here.r;
     vec2 centre = gl_FragCoord.xy;
     if (u_rain.z > 0.0) next += rain(centre);
     for (int i = 0; i < u_drop_count; ++i) {

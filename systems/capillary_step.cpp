@@ -25,6 +25,7 @@ CapillaryStep capillary_step(const params::Params& params, double step_seconds) 
     s.b = static_cast<float>(beta * s.dt * s.dt / (dx * dx * dx * dx));
     s.v = static_cast<float>(2.0 * nu * s.dt / (dx * dx));
     s.keep = static_cast<float>(std::max(0.0, 1.0 - drag * s.dt));
+    s.level = static_cast<float>(capillary_level_rad_s * capillary_level_rad_s * s.dt * s.dt);
     return s;
 }
 

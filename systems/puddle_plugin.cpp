@@ -44,6 +44,7 @@ void hand_over_passes(Surface& from, Surface& to) {
     to.field_sampler = std::move(from.field_sampler);
     to.sampler = std::move(from.sampler);
     to.tiled_sampler = std::move(from.tiled_sampler);
+    to.marched_sampler = std::move(from.marched_sampler);
 }
 
 bool wants_fixed_point(const gpu::Device& device, const Params& params) {

@@ -2,6 +2,9 @@
 
 #include "render/param_uniforms.hpp"
 #include "render/shader_phase.hpp"
+#include "systems/rain_rate.hpp"
+
+#include <algorithm>
 
 namespace puddle::systems {
 
@@ -24,6 +27,14 @@ glm::vec4 rain_layer_falls(double seconds, double speed) {
     return falls;
 }
 
+double streak_density_factor(const params::Params& params, double sim_time) {
+    if (params.get<ParamId::wave_model>() != params::WaveModel::capillary) return 1.0;
+    constexpr double usual_mm_h = 3.0;  // the default rain.rate, at which overlay.rain_density reads as set
+    const double rate = rain_rate_at(static_cast<double>(params.get<ParamId::rain_rate>()),
+                                     static_cast<double>(params.get<ParamId::rain_drift>()), sim_time);
+    return std::clamp(rate / usual_mm_h, 0.0, 2.5);
+}
+
 Result<void> prepare_rain_overlay(gpu::Device& device, RainOverlay& rain) {
     return rain.pass.ensure(device, {}, rain_desc);
 }
@@ -39,7 +50,8 @@ void rain_overlay_system(gpu::Device& device, const params::Params& params, cons
     pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.get<ParamId::overlay_rain_speed>()))
         .set("u_view_window", target.view.uniform())
         .set("u_resolution", target.view.view_size(frame.size))
-        .set("u_seed", params.get<ParamId::rain_seed>());
+        .set("u_seed", params.get<ParamId::rain_seed>())
+        .set("u_streak_strength", static_cast<float>(streak_density_factor(params, clock.sim_time)));
     pass.draw_fullscreen();
 }
 

@@ -23,6 +23,11 @@ inline constexpr std::array<double, 4> rain_layer_speeds{1.8, 2.5, 3.2, 3.8};
 // Each layer's fall at `seconds` for overlay.rain_speed `speed`: cells modulo 1.
 glm::vec4 rain_layer_falls(double seconds, double speed);
 
+// How many streaks fall, as a factor of overlay.rain_density: under wave.model = capillary the rain's
+// current rate (rain.rate with its drift, systems/rain_rate.hpp) over 3 mm/h, at most 2.5, so the streaks
+// thin out in a lull and thicken in a shower with the rings; 1 under the reference's model.
+double streak_density_factor(const params::Params& params, double sim_time);
+
 // Resource.
 struct RainOverlay {
     render::SinglePipelineCache pass;

@@ -28,7 +28,7 @@ gpu::PipelineDesc puddle_desc(const render::PuddleVariant& v, bool surface_unorm
 SurfaceMapping surface_mapping(const params::Params& params, const Surface& surface) {
     const float res = static_cast<float>(surface.resolution);
     const double res_d = surface.resolution;
-    const bool tiled = &surface_sampler(params, surface) == &surface.tiled_sampler;
+    const bool tiled = surface_tiled(params);
     if (!tiled) {  // the reference: the field spans the puddle once, heights in wave.height_scale units
         const glm::vec2 size(params.get<ParamId::puddle_size>().x, params.get<ParamId::puddle_size>().z);
         return {.uv = glm::vec4(1.0f / size, 0.5f, 0.5f),

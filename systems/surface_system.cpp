@@ -46,6 +46,10 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
                                                        .mipmaps = true,
                                                        .wrap = gpu::Wrap::Repeat,
                                                        .anisotropy = 4.0f});
+        surface.marched_sampler = device.create_sampler({.label = "marched surface",
+                                                         .min = gpu::Filter::Linear,
+                                                         .mag = gpu::Filter::Linear,
+                                                         .wrap = gpu::Wrap::Repeat});
     }
     return {};
 }
@@ -61,10 +65,15 @@ void surface_system(gpu::Device& device, const WaveField& field, Surface& surfac
     if (surface.periodic) surface.texture.generate_mipmaps();
 }
 
+bool surface_tiled(const params::Params& params) {
+    return params.get<params::ParamId::wave_model>() == params::WaveModel::capillary &&
+           params.get<params::ParamId::drops_model>() == params::DropsModel::pulse;
+}
+
 const gpu::Sampler& surface_sampler(const params::Params& params, const Surface& surface) {
-    const bool tiled = params.get<params::ParamId::wave_model>() == params::WaveModel::capillary &&
-                       params.get<params::ParamId::drops_model>() == params::DropsModel::pulse;
-    return tiled ? surface.tiled_sampler : surface.sampler;
+    if (!surface_tiled(params)) return surface.sampler;
+    const bool marched = params.get<params::ParamId::render_method>() == params::RenderMethod::raymarch;
+    return marched ? surface.marched_sampler : surface.tiled_sampler;
 }
 
 }  // namespace puddle::systems

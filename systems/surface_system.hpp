@@ -32,6 +32,9 @@ struct Surface {
     gpu::Sampler field_sampler;  // nearest, for the field
     gpu::Sampler sampler;        // linear, clamp: how the render pass reads a surface spanning the puddle
     gpu::Sampler tiled_sampler;  // trilinear, repeat: a capillary field repeating across the puddle
+    // Bilinear, repeat, no mip levels or anisotropy: the same field read by the raymarch, whose loop
+    // llvmpipe unrolls with each read's filtering inlined (an anisotropic read there took minutes to compile).
+    gpu::Sampler marched_sampler;
     int resolution = 0;
     bool unorm = false;  // RGBA8 fallback encoding (SURFACE_UNORM in the shaders)
     bool field_fixed_point = false;
@@ -46,8 +49,12 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
 // Renders level 0 and, for a capillary field, the mip chain below it.
 void surface_system(gpu::Device& device, const WaveField& field, Surface& surface);
 
-// The sampler the render pass reads `surface` with: repeating and trilinear for a capillary field
-// (wave.model, drops.model = pulse), otherwise clamped and bilinear, as the reference.
+// Whether the render pass reads `surface` as a tile repeated across the puddle: a capillary field
+// (wave.model) with pulse drops; otherwise it spans the puddle once, as the reference.
+bool surface_tiled(const params::Params& params);
+
+// The sampler the render pass reads `surface` with: for a tiled field repeating and trilinear (bilinear
+// under render.method = raymarch), otherwise clamped and bilinear, as the reference.
 const gpu::Sampler& surface_sampler(const params::Params& params, const Surface& surface);
 
 }  // namespace puddle::systems

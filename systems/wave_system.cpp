@@ -113,6 +113,7 @@ void capillary_steps(gpu::Device& device, const params::Params& params, const Fr
         auto pass = device.begin_pass(step_pass(field));
         bind_step(pass, step, field, drops.count);
         pass.set("u_step", glm::vec4(s.a, s.b, s.v, s.keep))
+            .set("u_level", s.level)
             .set("u_drop_shape", glm::vec4(static_cast<float>(s.texel_m * 1e3), static_cast<float>(gain),
                                            static_cast<float>(-back), 0.0f))
             .set("u_rain", glm::vec4(static_cast<float>(cells), static_cast<float>(field.resolution / cells),

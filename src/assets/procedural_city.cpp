@@ -59,7 +59,10 @@ Vec3 far_windows(const CityView& v, const Building& b, float x_deg, float el_deg
                     cover(el_deg, cy - 0.5f * w.h_deg, cy + 0.5f * w.h_deg, pix_deg);
     if (m <= 0.0f) return {};
     const std::uint32_t h = hash(b.id, as_u32(col), as_u32(row));
-    const float lit_share = w.lit_min + (w.lit_max - w.lit_min) * unit(hash(b.id, 21U));
+    // As on the near facades, whole floors are busy or asleep.
+    const float floor_busy = unit(hash(b.id, 62U, as_u32(row)));
+    const float lit_share =
+        (w.lit_min + (w.lit_max - w.lit_min) * unit(hash(b.id, 21U))) * (0.2f + 1.6f * floor_busy * floor_busy);
     if (unit(h) > lit_share) return {};
     return window_colour(h) * (m * w.gain * (0.35f + 0.65f * unit(hash(h, 23U))));
 }
@@ -133,11 +136,20 @@ Vec3 far_street_lights(const CityView& v, float az_deg, float el_deg) {
 }
 
 // A near building: a facade `distance` units away (drawn as an arc around the viewer, so its floors stay
-// level), spanning [left, right] degrees of its slot, its roof `top_rad` up.
+// level), spanning [left, right] degrees of its slot, its roof `top_rad` up. No two look alike: the roof
+// line, the window grid, how the floors are lit and whether a sign hangs on it all come from its hash.
+enum class Roof { Flat, Setback, Spire, Notch, Stepped };
+
 struct Facade {
     bool present = false;
     float left = 0, right = 0, distance = 10, top_rad = 0.3f;
     std::uint32_t id = 0;
+    Roof roof = Roof::Flat;
+    // Window grid, units: a cell of col_w x row_h, the window win_w x win_h in it (ribbon windows nearly
+    // fill the cell's width).
+    float col_w = 1.5f, row_h = 1.8f, win_w = 0.8f, win_h = 0.9f;
+    Vec3 warm, cool;  // the building's two window colours: most of its lit windows are `warm`
+    float cool_share = 0.2f;
 };
 
 constexpr int kNearSlots = 28;
@@ -159,21 +171,113 @@ Facade facade_in_slot(const CityView& v, int slot) {
     const float mid = (static_cast<float>(slot) + 0.5f) * kNearSlotDeg;
     float off = std::fabs(mid - v.moon_az_deg);
     off = std::min(off, 360.0f - off) / kNearSlotDeg;
-    if (off < 0.5f)
+    const bool before_moon = off < 0.5f;
+    if (before_moon)
         top_deg = std::min(top_deg, v.moon_el_deg - 10.0f);
     else if (off < 4.5f)
         top_deg = std::max(top_deg, v.moon_el_deg + 8.0f + 14.0f * r);
     f.top_rad = top_deg * kDeg;
+
+    const float roof = unit(hash(h, 48U));
+    f.roof = before_moon ? (roof < 0.5f ? Roof::Flat : Roof::Notch)
+             : roof < 0.3f ? Roof::Flat
+             : roof < 0.55f ? Roof::Setback
+             : roof < 0.7f ? Roof::Spire
+             : roof < 0.85f ? Roof::Stepped
+                            : Roof::Notch;
+    const bool ribbon = unit(hash(h, 54U)) < 0.2f;  // offices: bands of glass along each floor
+    f.col_w = 1.1f + 1.3f * unit(hash(h, 55U));
+    f.row_h = 1.6f + 0.6f * unit(hash(h, 56U));
+    f.win_w = f.col_w * (ribbon ? 0.94f : 0.35f + 0.4f * unit(hash(h, 57U)));
+    f.win_h = f.row_h * (0.42f + 0.3f * unit(hash(h, 58U)));
+    // Homes burn incandescent and warm white; offices fluorescent white, a few the green of old tubes.
+    const bool office = ribbon || unit(hash(h, 59U)) < 0.25f;
+    f.warm = office ? Vec3{0.85f, 0.93f, 1.0f} : Vec3{1.0f, 0.7f, 0.34f};
+    f.cool = office ? Vec3{0.75f, 1.0f, 0.8f} : Vec3{0.6f, 0.75f, 1.0f};
+    f.cool_share = office ? 0.15f : 0.1f + 0.25f * unit(hash(h, 60U));
     return f;
 }
 
-// The facade at horizontal position u and height h (units; the street is at h = -kEye). du, dh: a texel's
-// size there, for antialiasing. A storey is 1.8 units (about 3 m for an eye 1.6 m up).
-Vec3 facade_colour(const CityView& v, const Facade& f, float u, float h, float du, float dh, float glow) {
+// The roof's elevation (radians) at x degrees into the facade's slot: the silhouette against the sky.
+float roof_rad(const Facade& f, float x) {
+    const float t = (x - f.left) / std::max(f.right - f.left, 1e-3f);  // 0 to 1 across the facade
+    const float inset = 0.15f + 0.2f * unit(hash(f.id, 70U));
+    switch (f.roof) {
+        case Roof::Setback:  // the upper floors step back from both sides
+            return (t < inset || t > 1.0f - inset) ? f.top_rad * (0.72f + 0.12f * unit(hash(f.id, 71U)))
+                                                   : f.top_rad;
+        case Roof::Spire: {  // a mast on the roof's middle
+            const float half = 0.18f / std::max(f.right - f.left, 1e-3f);
+            const float mast = std::fabs(t - 0.5f) < half ? (4.0f + 6.0f * unit(hash(f.id, 72U))) * kDeg : 0.0f;
+            return f.top_rad + mast;
+        }
+        case Roof::Stepped: {  // three tiers, highest on one side
+            const bool right_high = unit(hash(f.id, 73U)) < 0.5f;
+            const float u = right_high ? t : 1.0f - t;
+            return f.top_rad * (u < 0.33f ? 0.78f : u < 0.66f ? 0.9f : 1.0f);
+        }
+        case Roof::Notch:  // two towers on one base
+            return std::fabs(t - 0.5f) < 0.12f ? f.top_rad * 0.8f : f.top_rad;
+        case Roof::Flat:
+        default: {  // plant rooms and water tanks break the line
+            const int bay = static_cast<int>(t * 9.0f);
+            const std::uint32_t b = hash(f.id, 74U, as_u32(bay));
+            return f.top_rad + (unit(b) < 0.3f ? (0.4f + 1.0f * unit(hash(b, 75U))) * kDeg : 0.0f);
+        }
+    }
+}
+
+// A sign's light: the colours of neon and LED, brighter than any window.
+Vec3 sign_colour(std::uint32_t h) {
+    static const Vec3 colours[] = {{1.0f, 0.12f, 0.55f}, {0.1f, 0.85f, 1.0f}, {1.0f, 0.1f, 0.06f},
+                                   {0.2f, 1.0f, 0.35f},  {1.0f, 0.55f, 0.08f}, {0.3f, 0.35f, 1.0f}};
+    return colours[hash(h, 80U) % 6U];
+}
+
+// Signs on the facade at u units from its left edge, `above` the street: a vertical blade sign on some
+// buildings, a fascia over some shop fronts, each with letters (blocks of its colour) and a halo that
+// lights the wall around it.
+Vec3 facade_signs(const Facade& f, float u, float above, float width, float du, float dh) {
+    Vec3 c;
+    const std::uint32_t hb = hash(f.id, 81U);
+    if (unit(hb) < 0.45f) {  // a blade sign
+        const float w = 0.7f + 0.4f * unit(hash(hb, 1U)), ht = 3.0f + 4.0f * unit(hash(hb, 2U));
+        const float x0 = width * (0.1f + 0.8f * unit(hash(hb, 3U))), y0 = 2.6f + 1.2f * unit(hash(hb, 4U));
+        const float dx = std::max({x0 - u, u - (x0 + w), 0.0f}), dy = std::max({y0 - above, above - (y0 + ht), 0.0f});
+        const Vec3 colour = sign_colour(hb) * (4.0f + 3.0f * unit(hash(hb, 5U)));
+        const float inside = cover(u, x0, x0 + w, du) * cover(above, y0, y0 + ht, dh);
+        if (inside > 0.0f) {
+            // One letter per 0.6 units down the sign; a letter is a block with a dark gap around it.
+            const float letter = std::floor((above - y0) / 0.6f);
+            const float in_letter = cover(std::fmod(above - y0, 0.6f), 0.08f, 0.52f, dh) *
+                                    cover(u - x0, 0.12f, w - 0.12f, du);
+            const float lit = unit(hash(hb, as_u32(static_cast<int>(letter)))) < 0.85f ? 1.0f : 0.15f;
+            c = c + colour * (inside * (0.12f + 0.88f * in_letter * lit));
+        }
+        const float d2 = dx * dx + dy * dy;
+        if (d2 < 9.0f) c = c + colour * (0.05f * std::exp(-std::sqrt(d2) / 0.6f) * (1.0f - d2 / 9.0f));
+    }
+    const std::uint32_t hf = hash(f.id, 82U);
+    if (unit(hf) < 0.35f && above > 1.3f && above < 2.6f) {  // a lit fascia over the shop front
+        const float x0 = width * 0.15f * unit(hash(hf, 1U)), x1 = width * (0.55f + 0.4f * unit(hash(hf, 2U)));
+        const Vec3 colour = sign_colour(hf) * (2.5f + 2.0f * unit(hash(hf, 3U)));
+        c = c + colour * (cover(u, x0, x1, du) * cover(above, 1.6f, 2.05f, dh));
+        const float dx = std::max({x0 - u, u - x1, 0.0f}), dy = std::max(1.6f - above, above - 2.05f);
+        if (dy > 0.0f) c = c + colour * (0.04f * std::exp(-(dy + dx) / 0.25f));
+    }
+    return c;
+}
+
+// The facade at horizontal position u and height h (units; the street is at h = -kEye); u_local is u
+// from the facade's left edge, `width` its width. du, dh: a texel's size there, for antialiasing. A unit is
+// the eye's height (about 1.6 m), so a storey (row_h) of 1.6 to 2.2 units is 2.6 to 3.5 m.
+Vec3 facade_colour(const CityView& v, const Facade& f, float u, float u_local, float width, float h, float du,
+                   float dh, float glow) {
     const float above = h + kEye;  // height above the street
     // Walls catch a little of the street's light low down and of the glowing sky high up; some are paler.
     const float pale = 0.6f + 0.8f * unit(hash(f.id, 50U));
     Vec3 c = kBuilding * pale + v.haze * (glow * (0.04f + 0.12f * std::exp(-above / 3.0f)));
+    c = c + facade_signs(f, u_local, above, width, du, dh);
     // The ground floor: a lit shop front (most buildings) under a dark fascia, mullions every 2 units.
     if (above < 2.2f) {
         if (unit(hash(f.id, 51U)) < 0.75f) {
@@ -185,18 +289,27 @@ Vec3 facade_colour(const CityView& v, const Facade& f, float u, float h, float d
         }
         return c;
     }
-    // Storeys of windows: cells of 1.5 x 1.8 units, windows 0.8 x 0.9 in them.
-    constexpr float col_w = 1.5f, row_h = 1.8f;
-    const float fu = u / col_w, fh = (above - 2.2f) / row_h;
+    // Storeys of windows in the building's own grid.
+    const float fu = u / f.col_w, fh = (above - 2.2f) / f.row_h;
     const float cu = std::floor(fu), ch = std::floor(fh);
-    const float m = cover((fu - cu) * col_w, 0.35f, 1.15f, du) * cover((fh - ch) * row_h, 0.45f, 1.35f, dh);
+    const float gap_w = 0.5f * (f.col_w - f.win_w), gap_h = 0.45f * (f.row_h - f.win_h);
+    const float m = cover((fu - cu) * f.col_w, gap_w, gap_w + f.win_w, du) *
+                    cover((fh - ch) * f.row_h, gap_h, gap_h + f.win_h, dh);
     if (m <= 0.0f) return c;
-    const std::uint32_t wh = hash(f.id, as_u32(static_cast<int>(cu)), as_u32(static_cast<int>(ch)));
-    const float lit_share = 0.25f + 0.45f * unit(hash(f.id, 21U));
-    if (unit(wh) > lit_share) return c + Vec3{0.012f, 0.014f, 0.024f} * m;  // dark glass: a little sky in it
+    const int floor_i = static_cast<int>(ch);
+    const std::uint32_t wh = hash(f.id, as_u32(static_cast<int>(cu)), as_u32(floor_i));
+    // Lit windows come in runs: some floors are busy, some asleep, and along a floor a flat or an office
+    // of four to seven windows is lit or dark together.
+    const float floor_busy = unit(hash(f.id, 62U, as_u32(floor_i)));
+    const int run = static_cast<int>(std::floor(cu / (4.0f + 3.0f * unit(hash(f.id, 63U)))));
+    const float run_lit = unit(hash(f.id, as_u32(run), as_u32(floor_i) + 7919U));
+    const float lit_share = (0.2f + 0.45f * unit(hash(f.id, 21U))) * (0.3f + 1.4f * floor_busy);
+    if (0.6f * run_lit + 0.4f * unit(wh) > lit_share + 0.25f)
+        return c + Vec3{0.012f, 0.014f, 0.024f} * m;  // dark glass: a little sky in it
     const float gain =
         unit(hash(wh, 23U)) < 0.25f ? 0.3f : 1.2f + 2.5f * unit(hash(wh, 24U));  // some curtained
-    return c + window_colour(wh) * (m * gain);
+    const Vec3 colour = unit(hash(wh, 22U)) < f.cool_share ? f.cool : f.warm;
+    return c + colour * (m * gain);
 }
 
 // The street below the horizon where no facade stands: wet paving lit by lamp pools and the city's glow,
@@ -258,15 +371,18 @@ Vec3 city(const CityView& v, Vec3 d, float az_deg, Vec3 sky, float glow) {
     const Facade f = facade_in_slot(v, slot);
     float m = 0.0f;
     Vec3 near;
-    if (f.present && el < f.top_rad + v.pix_rad) {
-        const float x = az_deg - static_cast<float>(slot) * kNearSlotDeg;
-        m = cover(x, f.left, f.right, pix_az_deg) * clamp01((f.top_rad - el) / v.pix_rad + 0.5f);
+    const float x = az_deg - static_cast<float>(slot) * kNearSlotDeg;
+    const float roof = f.present ? roof_rad(f, x) : 0.0f;
+    if (f.present && el < roof + v.pix_rad) {
+        m = cover(x, f.left, f.right, pix_az_deg) * clamp01((roof - el) / v.pix_rad + 0.5f);
         const float h = f.distance * std::tan(el);
         if (m > 0.0f && h > -kEye) {
             const float cos_el = std::cos(el);
             const float du = v.pix_rad * f.distance / std::max(horiz, 0.05f);
             const float dh = v.pix_rad * f.distance / (cos_el * cos_el);
-            near = facade_colour(v, f, az_deg * kDeg * f.distance, h, du, dh, glow);
+            const float to_units = kDeg * f.distance;
+            near = facade_colour(v, f, az_deg * to_units, (x - f.left) * to_units, (f.right - f.left) * to_units,
+                                 h, du, dh, glow);
         } else if (h <= -kEye) {
             m = 0.0f;  // below the facade's foot: the street in front of it
         }

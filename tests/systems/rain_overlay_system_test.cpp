@@ -13,7 +13,7 @@ namespace {
 
 // Pixels the overlay changed (by more than 8 of 255 in any channel) against the same frame without it.
 double streak_fraction(std::initializer_list<std::string> overlay_sets) {
-    const auto plain = render_with({"scene.kind=street"}, 10);
+    const auto plain = render_with({"scene.kind=street", "overlay.rain=false"}, 10);
     std::vector<std::string> sets{"scene.kind=street", "overlay.rain=true"};
     sets.insert(sets.end(), overlay_sets);
     params::Params p = make_params({"wave.resolution=256", "rain.seed=11"});
@@ -36,7 +36,7 @@ TEST(RainOverlay, OffOrTransparentChangesNothing) {
 }
 
 TEST(RainOverlay, StreaksTakeTheRainColour) {
-    const auto plain = render_with({"scene.kind=ocean"}, 2);
+    const auto plain = render_with({"scene.kind=ocean", "overlay.rain=false"}, 2);
     const auto red = render_with({"scene.kind=ocean", "overlay.rain=true", "overlay.rain_color=1,0,0",
                                   "overlay.rain_opacity=1", "overlay.rain_density=2"},
                                  2);

@@ -32,13 +32,14 @@ void save(const assets::Image& img, const std::string& name) {
 
 // On the reference's checkerboard, whose strong contrast the water hides as it grows murky (the paving's
 // own contrast is small next to the gradient Beer's law draws from near to far). The sky is turned down 10
-// stops: the night city's lit windows would add the same reflected contrast to both pictures.
+// stops: the night city's lit windows would add the same reflected contrast to both pictures. In the box,
+// whose water fills the region measured (beside a shore, dry ground the water does not cover shows too).
 TEST(RenderSystem, MoreTurbidityMeansLessGroundContrast) {
     const auto clear = render_with({"rain.intensity=0", "water.turbidity=0", "water.tint=0.3,0.3,0.3",
-                                    "ground.checkerboard=true", "environment.exposure=-10"},
+                                    "ground.checkerboard=true", "environment.exposure=-10", "puddle.shape=box", "overlay.rain=false"},
                                    3);
     const auto murky = render_with({"rain.intensity=0", "water.turbidity=0.5", "water.tint=0.3,0.3,0.3",
-                                    "ground.checkerboard=true", "environment.exposure=-10"},
+                                    "ground.checkerboard=true", "environment.exposure=-10", "puddle.shape=box", "overlay.rain=false"},
                                    3);
     EXPECT_GT(water_contrast(clear), 2.0 * water_contrast(murky))
         << water_contrast(clear) << " vs " << water_contrast(murky);

@@ -82,9 +82,9 @@ TEST(RunConditions, ReadTheLookOnScreenAndTheOverlaySwitch) {
     shown.scene = Scene::ocean;
     EXPECT_TRUE(ocean.test(world));
     EXPECT_FALSE(grid.test(world)) << "drops belong to the puddle only";
+    EXPECT_TRUE(overlay.test(world)) << "falling rain is on by default";
+    params.set<params::ParamId::overlay_rain>(false, params::ParamSource::CommandLine);
     EXPECT_FALSE(overlay.test(world));
-    params.set<params::ParamId::overlay_rain>(true, params::ParamSource::CommandLine);
-    EXPECT_TRUE(overlay.test(world));
 }
 
 // The wave field runs for the puddle's pulse drops only: another scene needs none, whatever drops.model
