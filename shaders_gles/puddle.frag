@@ -78,8 +78,8 @@ vec3 environment(vec3 dir, float bias) {
 }
 
 #ifdef METHOD_RAYMARCH
-// The finest level: inside the march's loop there are no derivatives to choose a level by, and a
-// filtered (anisotropic) read per step is what makes the march slow.
+// The finest level: inside the march's loop there are no derivatives to choose a level by (the pass
+// binds the surface's marched_sampler, bilinear, for the same reason).
 float water_height(vec2 xz) {
     vec2 uv = xz * u_surface_map.xy + u_surface_map.zw;
     return top() + decode_surface(textureLod(u_surface, uv, 0.0).rgb).r * u_height_units;

@@ -8,13 +8,15 @@ namespace puddle::systems {
 using params::ParamId;
 
 CapillaryStep capillary_step(const params::Params& params, double step_seconds) {
-    const double dx = static_cast<double>(params.get<ParamId::wave_size>()) / params.get<ParamId::wave_resolution>();
+    const double dx =
+        static_cast<double>(params.get<ParamId::wave_size>()) / params.get<ParamId::wave_resolution>();
     const double c = static_cast<double>(params.get<ParamId::wave_ring_speed>());
     const double beta = static_cast<double>(params.get<ParamId::wave_dispersion>()) * 1e-8;  // cm^4 to m^4
     const double nu = static_cast<double>(params.get<ParamId::wave_viscosity>()) * 1e-4;     // cm^2 to m^2
     const double drag = static_cast<double>(params.get<ParamId::wave_drag>());
     constexpr double margin = 0.7;
-    const double wave_limit = margin * 2.0 / std::sqrt(8.0 * c * c / (dx * dx) + 64.0 * beta / (dx * dx * dx * dx));
+    const double wave_limit =
+        margin * 2.0 / std::sqrt(8.0 * c * c / (dx * dx) + 64.0 * beta / (dx * dx * dx * dx));
     const double viscous_limit = nu > 0.0 ? margin * dx * dx / (16.0 * nu) : wave_limit;
     const double limit = std::min(wave_limit, viscous_limit);
     CapillaryStep s;

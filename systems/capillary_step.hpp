@@ -24,14 +24,14 @@ inline constexpr double capillary_height_unit_m = 1e-4;
 inline constexpr double capillary_level_rad_s = 2.0;
 
 struct CapillaryStep {
-    int substeps = 1;         // wave passes per fixed simulation step
-    double dt = 0.0;          // seconds per pass
-    double texel_m = 0.0;     // dx: wave.size / wave.resolution
-    float a = 0.0f;           // c^2 dt^2 / dx^2
-    float b = 0.0f;           // beta dt^2 / dx^4
-    float v = 0.0f;           // 2 nu dt / dx^2
-    float keep = 1.0f;        // 1 - drag dt: the share of the last pass's motion kept
-    float level = 0.0f;       // w0^2 dt^2
+    int substeps = 1;      // wave passes per fixed simulation step
+    double dt = 0.0;       // seconds per pass
+    double texel_m = 0.0;  // dx: wave.size / wave.resolution
+    float a = 0.0f;        // c^2 dt^2 / dx^2
+    float b = 0.0f;        // beta dt^2 / dx^4
+    float v = 0.0f;        // 2 nu dt / dx^2
+    float keep = 1.0f;     // 1 - drag dt: the share of the last pass's motion kept
+    float level = 0.0f;    // w0^2 dt^2
 };
 
 // For a fixed step of step_seconds at these parameters (wave.resolution, wave.size and the rest).

@@ -71,15 +71,21 @@ Result<void> build_field_and_surface(gpu::Device& device, const Params& params, 
     surface = std::move(new_surface);
     const char* encoding = field.fixed_point ? "fixed-point RG32I (no float render targets)" : "float RG32F";
     if (field.capillary)
-        spdlog::info("wave: {}x{} field, {}, capillary ripples over {:.2f} m ({:.1f} mm a texel, {} passes a "
-                     "step at {} steps/s)",
-                     field.resolution, field.resolution, encoding, static_cast<double>(params.get<ParamId::wave_size>()),
-                     1e3 * capillary_step(params, 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>())).texel_m,
-                     capillary_step(params, 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>())).substeps,
-                     static_cast<double>(params.get<ParamId::wave_steps_per_second>()));
+        spdlog::info(
+            "wave: {}x{} field, {}, capillary ripples over {:.2f} m ({:.1f} mm a texel, {} passes a "
+            "step at {} steps/s)",
+            field.resolution, field.resolution, encoding,
+            static_cast<double>(params.get<ParamId::wave_size>()),
+            1e3 * capillary_step(params,
+                                 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>()))
+                      .texel_m,
+            capillary_step(params, 1.0 / static_cast<double>(params.get<ParamId::wave_steps_per_second>()))
+                .substeps,
+            static_cast<double>(params.get<ParamId::wave_steps_per_second>()));
     else
         spdlog::info("wave: {}x{} field, {}, the reference's wave equation ({} steps/s)", field.resolution,
-                     field.resolution, encoding, static_cast<double>(params.get<ParamId::wave_steps_per_second>()));
+                     field.resolution, encoding,
+                     static_cast<double>(params.get<ParamId::wave_steps_per_second>()));
     return {};
 }
 

@@ -1,10 +1,10 @@
 #include "systems/rain_overlay_system.hpp"
 
+#include <algorithm>
+
 #include "render/param_uniforms.hpp"
 #include "render/shader_phase.hpp"
 #include "systems/rain_rate.hpp"
-
-#include <algorithm>
 
 namespace puddle::systems {
 

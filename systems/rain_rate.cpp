@@ -30,8 +30,9 @@ double rain_rate_at(double rate_mm_h, double drift, double time_s) {
     const double minutes = time_s / 60.0;
     const double two_pi = 2.0 * std::numbers::pi;
     // In -1..1; the phases keep the start of a run from always being the same point of the cycle.
-    const double wander = (0.5 * std::sin(two_pi * minutes / 6.1 + 0.4) + 0.3 * std::sin(two_pi * minutes / 17.3 + 2.1) +
-                           0.2 * std::sin(two_pi * minutes / 41.9 + 4.0));
+    const double wander =
+        (0.5 * std::sin(two_pi * minutes / 6.1 + 0.4) + 0.3 * std::sin(two_pi * minutes / 17.3 + 2.1) +
+         0.2 * std::sin(two_pi * minutes / 41.9 + 4.0));
     // Lulls go down to a quarter, showers up to 2.5 times: more time near the rate than at the extremes.
     const double stops = wander < 0.0 ? 2.0 * wander : 1.32 * wander;
     return rate_mm_h * std::exp2(drift * stops);

@@ -43,11 +43,12 @@ SurfaceMapping surface_mapping(const params::Params& params, const Surface& surf
     const double tile_units = static_cast<double>(params.get<ParamId::wave_size>()) / metres_per_unit;
     const double texel_m = static_cast<double>(params.get<ParamId::wave_size>()) / res_d;
     const float per_unit = static_cast<float>(1.0 / tile_units);
-    return {.uv = glm::vec4(per_unit, per_unit, 0.5f, 0.5f),
-            .slope_scale = glm::vec2(static_cast<float>(0.5 * res_d / tile_units)),
-            .height_units = static_cast<float>(capillary_height_unit_m / metres_per_unit),
-            .normal_scale = static_cast<float>(static_cast<double>(params.get<ParamId::water_normal_strength>()) *
-                                               capillary_height_unit_m / (2.0 * texel_m))};
+    return {
+        .uv = glm::vec4(per_unit, per_unit, 0.5f, 0.5f),
+        .slope_scale = glm::vec2(static_cast<float>(0.5 * res_d / tile_units)),
+        .height_units = static_cast<float>(capillary_height_unit_m / metres_per_unit),
+        .normal_scale = static_cast<float>(static_cast<double>(params.get<ParamId::water_normal_strength>()) *
+                                           capillary_height_unit_m / (2.0 * texel_m))};
 }
 
 const render::BuiltPipeline* PuddleRenderer::pipeline(gpu::Device& device, const render::PuddleVariant& v) {

@@ -5,7 +5,8 @@
 namespace puddle::systems {
 
 Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface& surface) {
-    const SurfaceVariant variant{!device.caps().half_float_render_targets, field.fixed_point, field.capillary};
+    const SurfaceVariant variant{!device.caps().half_float_render_targets, field.fixed_point,
+                                 field.capillary};
     // A new resolution: the same shader, a new texture (see build_wave_field).
     if (auto built = surface.pipelines.ensure(device, variant,
                                               [&] {

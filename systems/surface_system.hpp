@@ -33,7 +33,8 @@ struct Surface {
     gpu::Sampler sampler;        // linear, clamp: how the render pass reads a surface spanning the puddle
     gpu::Sampler tiled_sampler;  // trilinear, repeat: a capillary field repeating across the puddle
     // Bilinear, repeat, no mip levels or anisotropy: the same field read by the raymarch, whose loop
-    // llvmpipe unrolls with each read's filtering inlined (an anisotropic read there took minutes to compile).
+    // llvmpipe unrolls with each read's filtering inlined (an anisotropic read there took minutes to
+    // compile).
     gpu::Sampler marched_sampler;
     int resolution = 0;
     bool unorm = false;  // RGBA8 fallback encoding (SURFACE_UNORM in the shaders)

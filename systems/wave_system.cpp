@@ -87,7 +87,8 @@ gpu::RenderPassDesc step_pass(WaveField& field) {
             .target = {&field.textures[next], {field.resolution, field.resolution}},
             .load = gpu::LoadOp::DontCare};
 }
-void bind_step(gpu::RenderPass& pass, const render::BuiltPipeline& step, const WaveField& field, int drop_count) {
+void bind_step(gpu::RenderPass& pass, const render::BuiltPipeline& step, const WaveField& field,
+               int drop_count) {
     pass.set_pipeline(step.pipeline)
         .set_texture(0, field.newest(), field.nearest)
         .set_uniform_buffer(0, field.drops)
@@ -100,9 +101,10 @@ void capillary_steps(gpu::Device& device, const params::Params& params, const Fr
     const double size = static_cast<double>(params.get<ParamId::wave_size>());
     const double cells = std::max(1.0, std::round(size / rain_cell_m));
     const double cell_m = size / cells;
-    const double rate = rain_rate_at(static_cast<double>(params.get<ParamId::rain_rate>()), static_cast<double>(params.get<ParamId::rain_drift>()),
-                                     clock.sim_time);
-    const double chance = std::min(1.0, impacts_per_square_metre_second(rate) * cell_m * cell_m * rain_slot_s);
+    const double rate = rain_rate_at(static_cast<double>(params.get<ParamId::rain_rate>()),
+                                     static_cast<double>(params.get<ParamId::rain_drift>()), clock.sim_time);
+    const double chance =
+        std::min(1.0, impacts_per_square_metre_second(rate) * cell_m * cell_m * rain_slot_s);
     // A drop's push in height units per second squared at the peak, per mm^1.5 of drop (wave_step.frag).
     constexpr double drop_accel = 60000.0 / 0.3;
     const double gain = drop_accel * static_cast<double>(params.get<ParamId::rain_intensity>()) * s.dt * s.dt;
@@ -116,8 +118,9 @@ void capillary_steps(gpu::Device& device, const params::Params& params, const Fr
             .set("u_level", s.level)
             .set("u_drop_shape", glm::vec4(static_cast<float>(s.texel_m * 1e3), static_cast<float>(gain),
                                            static_cast<float>(-back), 0.0f))
-            .set("u_rain", glm::vec4(static_cast<float>(cells), static_cast<float>(field.resolution / cells),
-                                     static_cast<float>(chance), static_cast<float>(marshall_palmer_slope(rate))))
+            .set("u_rain",
+                 glm::vec4(static_cast<float>(cells), static_cast<float>(field.resolution / cells),
+                           static_cast<float>(chance), static_cast<float>(marshall_palmer_slope(rate))))
             .set("u_slot", static_cast<int>(std::fmod(slot, 1048576.0)))
             .set("u_slot_time", static_cast<float>(t - slot * rain_slot_s));
         pass.draw_fullscreen();

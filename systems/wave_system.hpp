@@ -4,7 +4,8 @@
 //   capillary: ripples of rain on shallow water in physical units (systems/capillary_step.hpp), periodic,
 //              several passes per fixed step as stability needs, rain hashed in the shader from
 //              rain.rate (systems/rain_rate.hpp); heights in units of 0.1 mm.
-//   reference: REFERENCE.md §1's damped wave equation, one pass per fixed step, the drops of drop_system. Where the GPU cannot render to float textures, the field is fixed-point RG32I (heights
+//   reference: REFERENCE.md §1's damped wave equation, one pass per fixed step, the drops of drop_system.
+//   Where the GPU cannot render to float textures, the field is fixed-point RG32I (heights
 // times 65536), which every GLES 3.0 GPU can render to; a test checks both give the same field.
 
 #include <array>
@@ -45,7 +46,7 @@ struct WaveField {
     int current = 0;  // index of the texture holding the newest step
     int resolution = 0;
     bool fixed_point = false;
-    bool capillary = true;  // wave.model when the field was made
+    bool capillary = true;             // wave.model when the field was made
     WaveStepPipelines step_pipelines;  // the step reads wave.damping
     gpu::Sampler nearest;
     gpu::Buffer drops;             // std140 vec4[max_drops]
@@ -67,9 +68,9 @@ struct WaveField {
     std::vector<float> read_heights(gpu::Device& device) const;
 };
 
-// Makes (or remakes, when wave.resolution, wave.float_field or wave.model changed) a flat field, keeping `field`'s
-// step pipelines, sampler and drop buffer. On an error (a texture the GPU cannot make: exit code GpuMemory
-// when it does not fit; a step shader that does not build) `field` is left as it was.
+// Makes (or remakes, when wave.resolution, wave.float_field or wave.model changed) a flat field, keeping
+// `field`'s step pipelines, sampler and drop buffer. On an error (a texture the GPU cannot make: exit code
+// GpuMemory when it does not fit; a step shader that does not build) `field` is left as it was.
 Result<void> build_wave_field(gpu::Device& device, const params::Params& params, WaveField& field);
 
 // Simulate stage, once per fixed step: advance the field by the step, with the live drops (reference:

@@ -61,8 +61,8 @@ Vec3 far_windows(const CityView& v, const Building& b, float x_deg, float el_deg
     const std::uint32_t h = hash(b.id, as_u32(col), as_u32(row));
     // As on the near facades, whole floors are busy or asleep.
     const float floor_busy = unit(hash(b.id, 62U, as_u32(row)));
-    const float lit_share =
-        (w.lit_min + (w.lit_max - w.lit_min) * unit(hash(b.id, 21U))) * (0.2f + 1.6f * floor_busy * floor_busy);
+    const float lit_share = (w.lit_min + (w.lit_max - w.lit_min) * unit(hash(b.id, 21U))) *
+                            (0.2f + 1.6f * floor_busy * floor_busy);
     if (unit(h) > lit_share) return {};
     return window_colour(h) * (m * w.gain * (0.35f + 0.65f * unit(hash(h, 23U))));
 }
@@ -179,10 +179,10 @@ Facade facade_in_slot(const CityView& v, int slot) {
     f.top_rad = top_deg * kDeg;
 
     const float roof = unit(hash(h, 48U));
-    f.roof = before_moon ? (roof < 0.5f ? Roof::Flat : Roof::Notch)
-             : roof < 0.3f ? Roof::Flat
+    f.roof = before_moon    ? (roof < 0.5f ? Roof::Flat : Roof::Notch)
+             : roof < 0.3f  ? Roof::Flat
              : roof < 0.55f ? Roof::Setback
-             : roof < 0.7f ? Roof::Spire
+             : roof < 0.7f  ? Roof::Spire
              : roof < 0.85f ? Roof::Stepped
                             : Roof::Notch;
     const bool ribbon = unit(hash(h, 54U)) < 0.2f;  // offices: bands of glass along each floor
@@ -208,7 +208,8 @@ float roof_rad(const Facade& f, float x) {
                                                    : f.top_rad;
         case Roof::Spire: {  // a mast on the roof's middle
             const float half = 0.18f / std::max(f.right - f.left, 1e-3f);
-            const float mast = std::fabs(t - 0.5f) < half ? (4.0f + 6.0f * unit(hash(f.id, 72U))) * kDeg : 0.0f;
+            const float mast =
+                std::fabs(t - 0.5f) < half ? (4.0f + 6.0f * unit(hash(f.id, 72U))) * kDeg : 0.0f;
             return f.top_rad + mast;
         }
         case Roof::Stepped: {  // three tiers, highest on one side
@@ -229,7 +230,7 @@ float roof_rad(const Facade& f, float x) {
 
 // A sign's light: the colours of neon and LED, brighter than any window.
 Vec3 sign_colour(std::uint32_t h) {
-    static const Vec3 colours[] = {{1.0f, 0.12f, 0.55f}, {0.1f, 0.85f, 1.0f}, {1.0f, 0.1f, 0.06f},
+    static const Vec3 colours[] = {{1.0f, 0.12f, 0.55f}, {0.1f, 0.85f, 1.0f},  {1.0f, 0.1f, 0.06f},
                                    {0.2f, 1.0f, 0.35f},  {1.0f, 0.55f, 0.08f}, {0.3f, 0.35f, 1.0f}};
     return colours[hash(h, 80U) % 6U];
 }
@@ -243,14 +244,15 @@ Vec3 facade_signs(const Facade& f, float u, float above, float width, float du, 
     if (unit(hb) < 0.45f) {  // a blade sign
         const float w = 0.7f + 0.4f * unit(hash(hb, 1U)), ht = 3.0f + 4.0f * unit(hash(hb, 2U));
         const float x0 = width * (0.1f + 0.8f * unit(hash(hb, 3U))), y0 = 2.6f + 1.2f * unit(hash(hb, 4U));
-        const float dx = std::max({x0 - u, u - (x0 + w), 0.0f}), dy = std::max({y0 - above, above - (y0 + ht), 0.0f});
+        const float dx = std::max({x0 - u, u - (x0 + w), 0.0f}),
+                    dy = std::max({y0 - above, above - (y0 + ht), 0.0f});
         const Vec3 colour = sign_colour(hb) * (4.0f + 3.0f * unit(hash(hb, 5U)));
         const float inside = cover(u, x0, x0 + w, du) * cover(above, y0, y0 + ht, dh);
         if (inside > 0.0f) {
             // One letter per 0.6 units down the sign; a letter is a block with a dark gap around it.
             const float letter = std::floor((above - y0) / 0.6f);
-            const float in_letter = cover(std::fmod(above - y0, 0.6f), 0.08f, 0.52f, dh) *
-                                    cover(u - x0, 0.12f, w - 0.12f, du);
+            const float in_letter =
+                cover(std::fmod(above - y0, 0.6f), 0.08f, 0.52f, dh) * cover(u - x0, 0.12f, w - 0.12f, du);
             const float lit = unit(hash(hb, as_u32(static_cast<int>(letter)))) < 0.85f ? 1.0f : 0.15f;
             c = c + colour * (inside * (0.12f + 0.88f * in_letter * lit));
         }
@@ -381,8 +383,8 @@ Vec3 city(const CityView& v, Vec3 d, float az_deg, Vec3 sky, float glow) {
             const float du = v.pix_rad * f.distance / std::max(horiz, 0.05f);
             const float dh = v.pix_rad * f.distance / (cos_el * cos_el);
             const float to_units = kDeg * f.distance;
-            near = facade_colour(v, f, az_deg * to_units, (x - f.left) * to_units, (f.right - f.left) * to_units,
-                                 h, du, dh, glow);
+            near = facade_colour(v, f, az_deg * to_units, (x - f.left) * to_units,
+                                 (f.right - f.left) * to_units, h, du, dh, glow);
         } else if (h <= -kEye) {
             m = 0.0f;  // below the facade's foot: the street in front of it
         }

@@ -66,9 +66,9 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
 
 std::string describe(const PuddleVariant& v) {
     static constexpr const char* grounds[] = {"checkerboard", "paving", "ground image", "ground hidden"};
-    return fmt::format("{}{}, {}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect", v.shore ? ", shore" : "",
-                       grounds[static_cast<int>(v.ground)], v.env_rgbm ? ", RGBM sky" : "",
-                       params::choice_name(v.tonemap));
+    return fmt::format("{}{}, {}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect",
+                       v.shore ? ", shore" : "", grounds[static_cast<int>(v.ground)],
+                       v.env_rgbm ? ", RGBM sky" : "", params::choice_name(v.tonemap));
 }
 
 }  // namespace puddle::render

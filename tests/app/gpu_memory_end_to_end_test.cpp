@@ -42,8 +42,8 @@ std::string write_sky(const TempDir& dir) {
 // Still water (no drops, no falling rain), so every frame shows the same picture whatever the time.
 std::string still_config(const std::string& sky, int face_size) {
     return fmt::format(
-        "[environment]\nimage = \"{}\"\nface_size = {}\n[rain]\nintensity = 0.0\n[overlay]\nrain = false\n", sky,
-        face_size);
+        "[environment]\nimage = \"{}\"\nface_size = {}\n[rain]\nintensity = 0.0\n[overlay]\nrain = false\n",
+        sky, face_size);
 }
 
 // "VmSize:" or "VmPeak:" of a running process, in KiB; 0 when unreadable.

@@ -57,8 +57,9 @@ TwoPictures render_both(std::initializer_list<std::string> sets, GroundKind forc
 TEST(PuddleVariants, HiddenGroundLooksLikeTheFullRefraction) {
     // Turbidity 1.2 over the default 4-unit depth: at most 0.6 * e^-8.9 of the ground shows. In the box:
     // beside a shore the dry ground shows whatever the water hides.
-    const TwoPictures p = render_both({"water.turbidity=1.2", "ground.checkerboard=false", "puddle.shape=box", "overlay.rain=false"},
-                                      GroundKind::Paving);
+    const TwoPictures p = render_both(
+        {"water.turbidity=1.2", "ground.checkerboard=false", "puddle.shape=box", "overlay.rain=false"},
+        GroundKind::Paving);
     ASSERT_FALSE(p.chosen.empty());
     EXPECT_EQ(p.chosen_variant.ground, GroundKind::Hidden);
     const ImageDiff d = compare_images(p.chosen, p.forced, 1);
@@ -68,8 +69,8 @@ TEST(PuddleVariants, HiddenGroundLooksLikeTheFullRefraction) {
 
 // The comparison above can fail: where the ground does show, leaving it out changes the picture.
 TEST(PuddleVariants, HidingAVisibleGroundChangesThePicture) {
-    const TwoPictures p = render_both({"water.turbidity=0.05", "ground.checkerboard=false", "overlay.rain=false"},
-                                      GroundKind::Hidden);
+    const TwoPictures p = render_both(
+        {"water.turbidity=0.05", "ground.checkerboard=false", "overlay.rain=false"}, GroundKind::Hidden);
     ASSERT_FALSE(p.chosen.empty());
     EXPECT_EQ(p.chosen_variant.ground, GroundKind::Paving);
     EXPECT_GT(compare_images(p.chosen, p.forced, 4).fraction_over, 0.2);

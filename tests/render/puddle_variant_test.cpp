@@ -66,8 +66,8 @@ TEST(PuddleVariant, GroundHiddenOnlyWhenTurbidityLeavesNothingVisible) {
     // A deeper puddle hides the ground at a lower turbidity; bigger waves bring it closer again.
     EXPECT_TRUE(ground_hidden(with({"water.turbidity=0.5", "puddle.depth=20"})));
     EXPECT_FALSE(ground_hidden(with({"water.turbidity=1.2", "wave.height_scale=2"})));
-    const PuddleVariant v =
-        choose_puddle_variant(with({"water.turbidity=2", "ground.checkerboard=false", "puddle.shape=box"}), false);
+    const PuddleVariant v = choose_puddle_variant(
+        with({"water.turbidity=2", "ground.checkerboard=false", "puddle.shape=box"}), false);
     EXPECT_EQ(v.ground, GroundKind::Hidden);  // whatever the ground is, none of it shows
     // Beside a shore the ground shows whatever the water hides.
     const PuddleVariant shore =
@@ -80,31 +80,31 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
     std::set<std::size_t> slots;
     std::set<std::vector<std::string>> defines;
     for (bool raymarch : {false, true})
-      for (bool shore : {false, true})
-        for (GroundKind g :
-             {GroundKind::Checkerboard, GroundKind::Paving, GroundKind::Image, GroundKind::Hidden})
-            for (bool rgbm : {false, true})
-                for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
-                    const PuddleVariant v{.raymarch = raymarch,
-                                          .shore = shore,
-                                          .ground = g,
-                                          .env_rgbm = rgbm,
-                                          .tonemap = static_cast<params::Tonemap>(t)};
-                    const std::size_t i = variant_index(v);
-                    EXPECT_LT(i, puddle_variant_count);
-                    slots.insert(i);
-                    const auto d = variant_defines(v, false);
-                    defines.insert(d);
-                    EXPECT_EQ(has(d, "METHOD_RAYMARCH"), raymarch);
-                    EXPECT_EQ(has(d, "SHORE"), shore);
-                    EXPECT_EQ(has(d, "GROUND_PAVING"), g == GroundKind::Paving);
-                    EXPECT_EQ(has(d, "GROUND_IMAGE"), g == GroundKind::Image);
-                    EXPECT_EQ(has(d, "GROUND_HIDDEN"), g == GroundKind::Hidden);
-                    EXPECT_EQ(has(d, "ENV_RGBM"), rgbm);
-                    EXPECT_TRUE(has(d, "TONEMAP " + std::to_string(t)));
-                    EXPECT_FALSE(has(d, "SURFACE_UNORM"));
-                    EXPECT_TRUE(has(variant_defines(v, true), "SURFACE_UNORM"));
-                }
+        for (bool shore : {false, true})
+            for (GroundKind g :
+                 {GroundKind::Checkerboard, GroundKind::Paving, GroundKind::Image, GroundKind::Hidden})
+                for (bool rgbm : {false, true})
+                    for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
+                        const PuddleVariant v{.raymarch = raymarch,
+                                              .shore = shore,
+                                              .ground = g,
+                                              .env_rgbm = rgbm,
+                                              .tonemap = static_cast<params::Tonemap>(t)};
+                        const std::size_t i = variant_index(v);
+                        EXPECT_LT(i, puddle_variant_count);
+                        slots.insert(i);
+                        const auto d = variant_defines(v, false);
+                        defines.insert(d);
+                        EXPECT_EQ(has(d, "METHOD_RAYMARCH"), raymarch);
+                        EXPECT_EQ(has(d, "SHORE"), shore);
+                        EXPECT_EQ(has(d, "GROUND_PAVING"), g == GroundKind::Paving);
+                        EXPECT_EQ(has(d, "GROUND_IMAGE"), g == GroundKind::Image);
+                        EXPECT_EQ(has(d, "GROUND_HIDDEN"), g == GroundKind::Hidden);
+                        EXPECT_EQ(has(d, "ENV_RGBM"), rgbm);
+                        EXPECT_TRUE(has(d, "TONEMAP " + std::to_string(t)));
+                        EXPECT_FALSE(has(d, "SURFACE_UNORM"));
+                        EXPECT_TRUE(has(variant_defines(v, true), "SURFACE_UNORM"));
+                    }
     EXPECT_EQ(slots.size(), puddle_variant_count);
     EXPECT_EQ(defines.size(), puddle_variant_count);
 }

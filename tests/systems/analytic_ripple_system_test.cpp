@@ -133,16 +133,15 @@ TEST(AnalyticRipples, KeepsTheAskedNumberOfSourcesAlive) {
     }
 }
 
-// The reference wave field's ring and the analytic ring, both at the wave field's scheme speed (steps_per_second /
-// sqrt 2 texels per second). Tolerance: 10% for the wave field, whose ring disperses (short waves lag);
-// 4% for the analytic ring, whose only error is the one-texel binning of the peak radius.
+// The reference wave field's ring and the analytic ring, both at the wave field's scheme speed
+// (steps_per_second / sqrt 2 texels per second). Tolerance: 10% for the wave field, whose ring disperses
+// (short waves lag); 4% for the analytic ring, whose only error is the one-texel binning of the peak radius.
 TEST(AnalyticRipples, RingTravelsAtTheWaveFieldsSpeed) {
     const double steps_per_second = 60.0, v = steps_per_second / std::sqrt(2.0);
 
-    auto wave = make_engine(
-        make_params({"wave.resolution=" + std::to_string(N), "wave.model=reference", "wave.damping=1",
-                     "rain.intensity=0"}),
-        {32, 18});
+    auto wave = make_engine(make_params({"wave.resolution=" + std::to_string(N), "wave.model=reference",
+                                         "wave.damping=1", "rain.intensity=0"}),
+                            {32, 18});
     ASSERT_TRUE(wave);
     step(*wave, {{C, C, 1.0f}});
     for (int i = 1; i < 20; ++i) step(*wave);

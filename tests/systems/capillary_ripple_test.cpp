@@ -115,7 +115,8 @@ TEST(CapillaryRipples, OneDropMakesATrainOfThinRingsAndACalmCentre) {
         const double spacing = rings[i + 1].radius_m - rings[i].radius_m;
         EXPECT_GT(spacing, 0.005) << "rings a centimetre or two apart: " << describe(rings);
         EXPECT_LT(spacing, 0.03) << describe(rings);
-        EXPECT_LT(rings[i].width_m, 0.5 * spacing) << "each ring much thinner than the spacing: " << describe(rings);
+        EXPECT_LT(rings[i].width_m, 0.5 * spacing)
+            << "each ring much thinner than the spacing: " << describe(rings);
     }
     // The centre is calm again within a fraction of a second: within 1 cm of the impact the water is
     // under a fifth of the rings' height.

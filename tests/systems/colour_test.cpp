@@ -17,8 +17,8 @@ namespace {
 // Looking level from high above the puddle: every pixel is sky; no vignette and no falling rain, so every
 // pixel is the same. In the box: the ground beside a shore reaches the horizon.
 const std::initializer_list<std::string> kSkyOnly{"camera.position=0,100,0", "camera.target=0,100,-10",
-                                                  "look.vignette=0",          "rain.intensity=0",
-                                                  "overlay.rain=false",       "puddle.shape=box"};
+                                                  "look.vignette=0",         "rain.intensity=0",
+                                                  "overlay.rain=false",      "puddle.shape=box"};
 
 assets::Image render_sky(const std::string& env, std::initializer_list<std::string> more = {}) {
     params::Params p = make_params(kSkyOnly);

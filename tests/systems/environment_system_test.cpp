@@ -139,8 +139,8 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     const std::string ground = (dir / "red.png").string();
     ASSERT_TRUE(assets::write_png(ground, red).ok());
 
-    auto engine = make_engine(make_params({"rain.intensity=0", "overlay.rain=false", "ground.checkerboard=false"}),
-                              {96, 54});
+    auto engine = make_engine(
+        make_params({"rain.intensity=0", "overlay.rain=false", "ground.checkerboard=false"}), {96, 54});
     ASSERT_TRUE(engine);
     const assets::Image before = render_frames(*engine, 2);
     auto& params = engine->params();
@@ -178,9 +178,9 @@ TEST(EnvironmentSystem, TheGroundImageIsReadOnlyWhenItShows) {
     const std::string red_path = (dir / "red.png").string();
     ASSERT_TRUE(assets::write_png(red_path, red).ok());
 
-    auto engine = make_engine(
-        make_params({"rain.intensity=0", "overlay.rain=false", "water.turbidity=0.05", "ground.checkerboard=true"}),
-        {96, 54});
+    auto engine = make_engine(make_params({"rain.intensity=0", "overlay.rain=false", "water.turbidity=0.05",
+                                           "ground.checkerboard=true"}),
+                              {96, 54});
     ASSERT_TRUE(engine);
     const auto& ground = engine->world().resource<systems::Ground>();
     EXPECT_FALSE(ground.made);

@@ -28,18 +28,17 @@ TEST(Golden, DefaultNightPuddle) {
 }
 
 TEST(Golden, MurkyPondOnCobblesRaymarched) {
-    check_golden(
-        "murky_pond",
-        render_with({"ground.checkerboard=false", "water.turbidity=0.08", "water.tint=0.05,0.09,0.04",
-                     "puddle.depth=8", "render.method=raymarch", "rain.rate=1.5"},
-                    90, golden_size));
+    check_golden("murky_pond", render_with({"ground.checkerboard=false", "water.turbidity=0.08",
+                                            "water.tint=0.05,0.09,0.04", "puddle.depth=8",
+                                            "render.method=raymarch", "rain.rate=1.5"},
+                                           90, golden_size));
 }
 
 TEST(Golden, DownpourMirrorTurnedSky) {
     check_golden("downpour",
-                 render_with({"rain.rate=14", "rain.drift=0.3", "rain.intensity=0.25",
-                              "water.reflectivity=1", "environment.rotation=2.5", "look.fog_density=0.02",
-                              "look.vignette=0.8", "camera.position=25,10,0", "camera.target=-40,2,0"},
+                 render_with({"rain.rate=14", "rain.drift=0.3", "rain.intensity=0.25", "water.reflectivity=1",
+                              "environment.rotation=2.5", "look.fog_density=0.02", "look.vignette=0.8",
+                              "camera.position=25,10,0", "camera.target=-40,2,0"},
                              90, golden_size));
 }
 

@@ -1,5 +1,7 @@
 // How hard it rains and how many drops that is (systems/rain_rate.hpp), and the capillary step's factors
 // (systems/capillary_step.hpp).
+#include "systems/rain_rate.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 
 #include "params/param_store.hpp"
 #include "systems/capillary_step.hpp"
-#include "systems/rain_rate.hpp"
 
 namespace puddle::systems {
 namespace {
@@ -67,7 +68,8 @@ TEST(CapillaryStep, SubstepsKeepTheLeapfrogStableAtAnyResolution) {
         EXPECT_LE(8.0 * s.v, 0.7 + 1e-6) << res;
         if (s.substeps > 1) {  // one pass fewer would pass a limit: no more passes than needed
             const double k = double(s.substeps) / (s.substeps - 1);
-            EXPECT_TRUE((8.0 * s.a + 64.0 * s.b) * k * k >= 1.96 - 1e-4 || 8.0 * s.v * k >= 0.7 - 1e-4) << res;
+            EXPECT_TRUE((8.0 * s.a + 64.0 * s.b) * k * k >= 1.96 - 1e-4 || 8.0 * s.v * k >= 0.7 - 1e-4)
+                << res;
         }
         EXPECT_NEAR(s.texel_m, 1.6 / res, 1e-9);
     }

@@ -35,12 +35,14 @@ void save(const assets::Image& img, const std::string& name) {
 // stops: the night city's lit windows would add the same reflected contrast to both pictures. In the box,
 // whose water fills the region measured (beside a shore, dry ground the water does not cover shows too).
 TEST(RenderSystem, MoreTurbidityMeansLessGroundContrast) {
-    const auto clear = render_with({"rain.intensity=0", "water.turbidity=0", "water.tint=0.3,0.3,0.3",
-                                    "ground.checkerboard=true", "environment.exposure=-10", "puddle.shape=box", "overlay.rain=false"},
-                                   3);
-    const auto murky = render_with({"rain.intensity=0", "water.turbidity=0.5", "water.tint=0.3,0.3,0.3",
-                                    "ground.checkerboard=true", "environment.exposure=-10", "puddle.shape=box", "overlay.rain=false"},
-                                   3);
+    const auto clear = render_with(
+        {"rain.intensity=0", "water.turbidity=0", "water.tint=0.3,0.3,0.3", "ground.checkerboard=true",
+         "environment.exposure=-10", "puddle.shape=box", "overlay.rain=false"},
+        3);
+    const auto murky = render_with(
+        {"rain.intensity=0", "water.turbidity=0.5", "water.tint=0.3,0.3,0.3", "ground.checkerboard=true",
+         "environment.exposure=-10", "puddle.shape=box", "overlay.rain=false"},
+        3);
     EXPECT_GT(water_contrast(clear), 2.0 * water_contrast(murky))
         << water_contrast(clear) << " vs " << water_contrast(murky);
 }

@@ -15,7 +15,8 @@ inline constexpr glm::ivec2 render_test_size{160, 90};
 // `frames` frames at 60 fps with the given --set values; small field for speed.
 inline assets::Image render_with(std::initializer_list<std::string> sets, int frames = 45,
                                  glm::ivec2 size = render_test_size) {
-    params::Params p = make_params({"wave.resolution=256", "wave.size=0.8", "rain.seed=11"});  // 3.1 mm texels
+    params::Params p =
+        make_params({"wave.resolution=256", "wave.size=0.8", "rain.seed=11"});  // 3.1 mm texels
     apply_sets(p, sets);
     auto engine = make_engine(p, size);
     if (!engine) return {};

@@ -47,7 +47,8 @@ void expect_surface_matches_field(app::Engine& e, bool periodic) {
         for (int x = 0; x < N; ++x) {
             const SurfaceTexel& t = s[std::size_t(y) * N + x];
             peak = std::max(peak, std::abs(h(x, y)));
-            if (x == 0 || y == 0 || x == N - 1 || y == N - 1) edge_peak = std::max(edge_peak, std::abs(h(x, y)));
+            if (x == 0 || y == 0 || x == N - 1 || y == N - 1)
+                edge_peak = std::max(edge_peak, std::abs(h(x, y)));
             worst =
                 std::max({worst, std::abs(t.height - h(x, y)), std::abs(t.dx - (h(x - 1, y) - h(x + 1, y))),
                           std::abs(t.dz - (h(x, y - 1) - h(x, y + 1)))});
@@ -58,9 +59,9 @@ void expect_surface_matches_field(app::Engine& e, bool periodic) {
 }
 
 TEST(SurfaceSystem, HoldsTheHeightAndItsCentralDifferencesClampedAtTheEdges) {
-    auto e = make_engine(make_params({"wave.model=reference", "wave.resolution=" + std::to_string(N),
-                                      "rain.intensity=0"}),
-                         {32, 18});
+    auto e = make_engine(
+        make_params({"wave.model=reference", "wave.resolution=" + std::to_string(N), "rain.intensity=0"}),
+        {32, 18});
     ASSERT_TRUE(e);
     step(*e, {{20.5f, 30.5f, 1.0f}, {2.5f, 61.5f, -0.5f}});  // one drop near an edge, to test the clamp
     for (int i = 0; i < 12; ++i) step(*e);
@@ -81,9 +82,9 @@ TEST(SurfaceSystem, WrapsTheDifferencesAroundTheEdgesOfACapillaryField) {
 }
 
 TEST(SurfaceSystem, StillWaterIsFlatInEveryTexel) {
-    auto e = make_engine(make_params({"wave.model=reference", "wave.resolution=" + std::to_string(N),
-                                      "rain.intensity=0"}),
-                         {32, 18});
+    auto e = make_engine(
+        make_params({"wave.model=reference", "wave.resolution=" + std::to_string(N), "rain.intensity=0"}),
+        {32, 18});
     ASSERT_TRUE(e);
     auto& w = e->world();
     systems::surface_system(e->device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());

@@ -15,9 +15,8 @@ constexpr int N = 128;
 constexpr float C = 64.5f;  // the centre of texel 64: the impulse is symmetric on the grid
 
 std::unique_ptr<app::Engine> quiet_engine(float damping) {
-    return make_engine(make_params({"wave.resolution=" + std::to_string(N),
-                                    "wave.model=reference", "wave.damping=" + std::to_string(damping),
-                                    "rain.intensity=0"}),
+    return make_engine(make_params({"wave.resolution=" + std::to_string(N), "wave.model=reference",
+                                    "wave.damping=" + std::to_string(damping), "rain.intensity=0"}),
                        {32, 18});
 }
 
