@@ -133,7 +133,7 @@ int MqttClient::send_qos1(const std::string& topic, const void* payload, std::si
 void MqttClient::on_message(mosquitto*, void* p, const mosquitto_message* m) {
     auto* self = static_cast<MqttClient*>(p);
     const auto size = static_cast<std::size_t>(std::max(0, m->payloadlen));
-    Inbound in{m->topic ? m->topic : "", {}, size};
+    Inbound in{m->topic ? m->topic : "", {}, size, m->retain};
     if (size <= max_payload_bytes && m->payload)
         in.payload.assign(static_cast<const char*>(m->payload), size);
     // The rate limit: a token bucket, refilled at rate_per_second up to rate_burst. Over the limit, the

@@ -4,8 +4,9 @@
 // from its file.
 //
 // Topics under the prefix P (README "Remote control" has the table):
-//   in:  P/set/<parameter>  P/preset/set  P/command   (the same three under the fleet prefix)
-//        homeassistant/status ("online": discovery is published again)
+//   in:  P/set/<parameter>  P/preset/set  P/command   (the same three under the fleet prefix; commands,
+//        so a retained message there is ignored: remote_request.hpp)
+//        homeassistant/status ("online": discovery is published again; may be retained)
 //   out: P/availability  P/state  P/state/<parameter>  P/preset  P/health  P/screenshot  P/error
 
 #include <string>

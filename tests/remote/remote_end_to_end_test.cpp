@@ -298,6 +298,65 @@ TEST_F(RemoteEndToEnd, BrokerRestartReconnectsAndRepublishesAndTheDisplayRunsOn)
         << puddle->log();
 }
 
+// Issue 33, item 4: a retained next-preset stepped (and saved) the preset at every reconnect, and a
+// retained set overrode every later plain one. A broker with persistence keeps them across its restart,
+// as a real one does: ignored each time, said once per topic, and clearing them is no error.
+TEST_F(RemoteEndToEnd, RetainedCommandsAreIgnoredAtEveryReconnectAndSaidOncePerTopic) {
+    const int port = free_port();
+    const auto store = dir / "broker";
+    std::filesystem::create_directories(store);
+    client.reset();
+    broker = std::make_unique<MosquittoBroker>(
+        port, fmt::format("listener {} 127.0.0.1\nallow_anonymous true\nuser root\npersistence true\n"
+                          "persistence_location {}/\n",
+                          port, store.string()));
+    ASSERT_TRUE(broker->running()) << broker->log();
+    auto connect_client = [&] {
+        client = std::make_unique<MqttTestClient>(MqttTestClient::Options{.port = port});
+        ASSERT_TRUE(client->connected());
+        client->subscribe(std::string(prefix) + "/#");
+    };
+    connect_client();
+    client->publish(topic("command"), "next-preset", true);
+    client->publish(topic("set/rain.intensity"), "0.9", true);
+    ASSERT_TRUE(client->wait_for(topic("set/rain.intensity")));  // stored on the broker
+
+    start_puddle();
+    // A plain set after the retained messages: when its state comes back, they have been handled.
+    auto handled_after = [&](const std::string& vignette) {
+        client->publish(topic("set/look.vignette"), vignette);
+        ASSERT_TRUE(wait_state("look.vignette", vignette)) << puddle->log();
+    };
+    handled_after("0.5");
+    for (int restart = 0; restart < 2; ++restart) {
+        client.reset();
+        broker->stop();
+        ASSERT_TRUE(broker->start()) << broker->log();
+        connect_client();
+        ASSERT_TRUE(client->wait_for(
+            topic("availability"), [](auto& p) { return p == "online"; }, 60))
+            << puddle->log();
+        handled_after(restart == 0 ? "0.6" : "0.7");
+    }
+    EXPECT_EQ(client->latest()[topic("preset")], "none") << puddle->log();
+    EXPECT_EQ(client->latest()[topic("state/rain.intensity")], "0.3") << puddle->log();
+    EXPECT_EQ(puddle->count("remote: " + topic("command") + ": retained commands are ignored"), 1)
+        << puddle->log();
+    EXPECT_EQ(puddle->count("remote: " + topic("set/rain.intensity") + ": retained commands are ignored"), 1)
+        << puddle->log();
+    EXPECT_EQ(puddle->count("retained commands are ignored"), 2) << puddle->log();
+
+    // Clearing them (an empty retained message, passed on to subscribers) is neither applied nor an error.
+    const std::size_t errors = client->received(topic("error")).size();
+    client->publish(topic("command"), "", true);
+    client->publish(topic("set/rain.intensity"), "", true);
+    handled_after("0.8");
+    EXPECT_EQ(client->received(topic("error")).size(), errors) << puddle->log();
+    EXPECT_EQ(puddle->count("info: preset:"), 0) << puddle->log();
+    EXPECT_EQ(puddle->stop(), 0);
+    EXPECT_EQ(read_file(dir / "state.toml").find("0.9"), std::string::npos) << read_file(dir / "state.toml");
+}
+
 TEST_F(RemoteEndToEnd, NoBrokerIsOneWarningAndTheDisplayRuns) {
     const int port = free_port();
     dir.write("puddle.toml", remote_config(port));

@@ -93,6 +93,31 @@ TEST(RemoteRequest, CommandsPresetsAndHomeAssistant) {
     EXPECT_TRUE(std::holds_alternative<Ignored>(ok("homeassistant/status", "offline")));
 }
 
+// A command is an event: a retained one (replayed by the broker at every subscription) is never
+// applied, whatever it holds, on every command topic and under either prefix; an empty payload is a
+// retained message being cleared, not an error. homeassistant/status is a state and may be retained.
+TEST(RemoteRequest, RetainedCommandsAreNeverAppliedAndAnEmptyPayloadIsCleared) {
+    for (const char* topic :
+         {"puddle/a1/command", "puddle/all/command", "puddle/a1/preset/set", "puddle/all/preset/set",
+          "puddle/a1/set/rain.intensity", "puddle/all/set/rain.intensty"}) {
+        for (const char* payload : {"next-preset", "0.5", "downpour", "", "junk"}) {
+            auto r = parse_request(settings(), Inbound{topic, payload, std::string(payload).size(), true});
+            ASSERT_TRUE(r) << topic << " " << payload << ": " << r.error().message;
+            EXPECT_TRUE(std::holds_alternative<RetainedCommand>(*r)) << topic << " " << payload;
+        }
+        auto oversized = parse_request(settings(), Inbound{topic, "", max_payload_bytes + 1, true});
+        ASSERT_TRUE(oversized) << oversized.error().message;
+        EXPECT_TRUE(std::holds_alternative<RetainedCommand>(*oversized));
+        for (const char* empty : {"", " \n"})
+            EXPECT_TRUE(std::holds_alternative<Ignored>(ok(topic, empty))) << topic;
+    }
+    auto status = parse_request(settings(), Inbound{"homeassistant/status", "online", 6, true});
+    ASSERT_TRUE(status);
+    EXPECT_TRUE(std::holds_alternative<HomeAssistantOnline>(*status));
+    // Not retained, the same messages apply as before.
+    EXPECT_EQ(std::get<Command>(ok("puddle/a1/command", "next-preset")), Command::NextPreset);
+}
+
 // A wall's screens switch together at a time the message names (issue 20, "Changes in step").
 TEST(RemoteRequest, ApplyAtIsTakenOffTheValueAsNanosecondsSinceTheEpoch) {
     const auto set = std::get<SetParam>(ok("puddle/all/set/rain.intensity", "0.75 apply_at=1764590402.5"));
