@@ -1,15 +1,19 @@
 // The MQTT client (remote/mqtt_client.hpp) against a real Mosquitto: what is queued before a clean stop
-// reaches the broker, however much of it there is.
+// reaches the broker, however much of it there is; and no network (a host that drops packets, a broker
+// that stops answering) holds the start or the stop.
 #include "remote/mqtt_client.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <csignal>
 #include <string>
 #include <thread>
 
+#include "support/blackhole_port.hpp"
 #include "support/mosquitto_broker.hpp"
+#include "util/monotonic_clock.hpp"
 
 namespace puddle::test {
 namespace {
@@ -44,6 +48,45 @@ TEST(MqttClientStop, ABurstQueuedJustBeforeTheStopAllReachesTheBroker) {
     int retained = 0;
     for (const auto& [topic, payload] : fresh.latest()) retained += payload == "kept";
     EXPECT_EQ(retained, burst);
+}
+
+// Issue 33, item 5: with the broker's host dropping packets, the blocking connect held the stop (SIGTERM,
+// `systemctl stop`) for the kernel's SYN timeout, 129 s, past systemd's stop timeout.
+TEST(MqttClientStop, AHostThatDropsPacketsHoldsNeitherTheStartNorTheStop) {
+    BlackholePort hole;
+    const double t0 = monotonic_seconds();
+    auto client = remote::MqttClient::start(
+        {.host = "127.0.0.1", .port = hole.port(), .client_id = "hole", .availability_topic = "hole/status"});
+    ASSERT_TRUE(client) << client.error().message;
+    EXPECT_LT(monotonic_seconds() - t0, 0.2) << "the start waited for the network";
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // well inside the connect
+    EXPECT_FALSE((*client)->connected());
+    (*client)->publish("hole/x", "queued", true);  // the frame thread's calls do not wait either
+    const double t1 = monotonic_seconds();
+    client->reset();
+    EXPECT_LT(monotonic_seconds() - t1, 1.0) << "the stop waited for the network";
+}
+
+// A broker that keeps the connection open and stops answering (its host froze): the goodbye waits for
+// its acknowledgements, but the stop still ends within a second.
+TEST(MqttClientStop, ABrokerThatStopsAnsweringHoldsTheStopUnderASecond) {
+    if (!mosquitto_available()) GTEST_SKIP() << no_mosquitto;
+    MosquittoBroker broker;
+    ASSERT_TRUE(broker.start()) << broker.log();
+    auto client = remote::MqttClient::start({.host = "127.0.0.1",
+                                             .port = broker.port(),
+                                             .client_id = "frozen",
+                                             .availability_topic = "frozen/s"});
+    ASSERT_TRUE(client) << client.error().message;
+    for (int i = 0; i < 1000 && !(*client)->connected(); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE((*client)->connected());
+    broker.signal(SIGSTOP);
+    for (int i = 0; i < 50; ++i) (*client)->publish(fmt::format("frozen/{}", i), "never acknowledged", true);
+    const double t0 = monotonic_seconds();
+    client->reset();
+    EXPECT_LT(monotonic_seconds() - t0, 1.0);
+    broker.signal(SIGCONT);
 }
 
 }  // namespace

@@ -18,9 +18,11 @@
 #include "params/registry.hpp"
 #include "remote/remote_request.hpp"
 #include "remote/writable_patterns.hpp"
+#include "support/blackhole_port.hpp"
 #include "support/mosquitto_broker.hpp"
 #include "support/running_puddle.hpp"
 #include "support/test_support.hpp"
+#include "util/monotonic_clock.hpp"
 
 namespace puddle::test {
 namespace {
@@ -366,6 +368,19 @@ TEST_F(RemoteEndToEnd, NoBrokerIsOneWarningAndTheDisplayRuns) {
     ASSERT_TRUE(p.wait_for("stats:", 3)) << p.log();  // four reports: frames go on
     EXPECT_EQ(p.count("cannot connect to the broker"), 1) << p.log();
     EXPECT_EQ(p.stop(), 0);
+}
+
+// Issue 33, item 5: the whole process, as `systemctl stop` sees it, with the broker's host dropping
+// packets (it took 129 s, and systemd killed it).
+TEST_F(RemoteEndToEnd, SigtermWhileTheBrokersHostDropsPacketsEndsAtOnce) {
+    BlackholePort hole;
+    dir.write("puddle.toml", remote_config(hole.port()));
+    Running p(puddle_args(dir), dir / "puddle.log");
+    ASSERT_TRUE(p.wait_for("started:")) << p.log();
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // inside the connect
+    const double t0 = monotonic_seconds();
+    EXPECT_EQ(p.stop(), 0) << p.log();
+    EXPECT_LT(monotonic_seconds() - t0, 1.5) << p.log();
 }
 
 TEST_F(RemoteEndToEnd, LastWillSaysOfflineWhenKilled) {
