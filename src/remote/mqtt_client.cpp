@@ -9,9 +9,11 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstring>
+#include <ctime>
 #include <mutex>
 
 #include "util/monotonic_clock.hpp"
+#include "util/recurring_fault.hpp"
 #include "util/worker_thread.hpp"
 
 namespace puddle::remote {
@@ -77,8 +79,17 @@ struct MqttClient::Session {
     // at a stop) would otherwise die with the connection.
     int unacknowledged = 0;
     bool outage_reported = false;
+    // Connections the broker closed soon after making them (within stable_s), one after the other with
+    // no failed attempt between: another client with our id takes the connection each time it
+    // reconnects (MQTT 3.1.1 does not say so), and we take it back. The third is said with its cause.
+    double connected_at = 0;  // monotonic seconds
+    bool held = false;        // this connection has lasted stable_s
+    int short_in_a_row = 0;
+    RecurringFault takeover;
+    void on_lost(int rc);
+    void on_held();
     double tokens = rate_burst, tokens_at = 0;
-    std::vector<Inbound> held;  // the newest rate-limited message per topic
+    std::vector<Inbound> held_back;  // the newest rate-limited message per topic
 };
 
 MqttClient::MqttClient(std::shared_ptr<Session> session) : session_(std::move(session)) {}
@@ -196,10 +207,14 @@ void MqttClient::Session::on_connect(mosquitto*, void* p, int rc) {
         mosquitto_subscribe(self->mosq, nullptr, topic.c_str(), 1);
     self->unacknowledged = 0;  // a new session: what was in flight on the old one is not coming back
     self->send_qos1(self->options.availability_topic, "online", 6, true);
+    // While connections are being taken over, each reconnect is not news (the summary counts them).
     if (!self->stopping)
-        spdlog::info("remote: connected to {}:{} as {}", self->options.host, self->options.port,
-                     self->options.client_id);
+        spdlog::log(self->takeover.active() ? spdlog::level::debug : spdlog::level::info,
+                    "remote: connected to {}:{} as {}", self->options.host, self->options.port,
+                    self->options.client_id);
     self->outage_reported = false;
+    self->connected_at = monotonic_seconds();
+    self->held = false;
     self->connected = true;
     ++self->connections;
 }
@@ -224,20 +239,20 @@ void MqttClient::Session::on_message(mosquitto*, void* p, const mosquitto_messag
     if (size <= max_payload_bytes && m->payload)
         in.payload.assign(static_cast<const char*>(m->payload), size);
     // The rate limit: a token bucket, refilled at rate_per_second up to rate_burst. Over the limit, the
-    // message waits in held, replacing an older one of the same topic.
+    // message waits in held_back, replacing an older one of the same topic.
     self->refill_tokens();
-    if (self->tokens < 1.0 || !self->held.empty()) {
-        for (Inbound& h : self->held)
+    if (self->tokens < 1.0 || !self->held_back.empty()) {
+        for (Inbound& h : self->held_back)
             if (h.topic == in.topic) {
                 h = std::move(in);
                 ++self->dropped;  // the value it replaced
                 return;
             }
-        if (self->held.size() >= inbox_capacity) {
+        if (self->held_back.size() >= inbox_capacity) {
             ++self->dropped;
             return;
         }
-        self->held.push_back(std::move(in));
+        self->held_back.push_back(std::move(in));
         self->release_held();
         return;
     }
@@ -254,11 +269,11 @@ void MqttClient::Session::refill_tokens() {
 void MqttClient::Session::release_held() {
     refill_tokens();
     std::size_t released = 0;
-    while (released < held.size() && tokens >= 1.0) {
+    while (released < held_back.size() && tokens >= 1.0) {
         tokens -= 1.0;
-        deliver(std::move(held[released++]));
+        deliver(std::move(held_back[released++]));
     }
-    held.erase(held.begin(), held.begin() + static_cast<std::ptrdiff_t>(released));
+    held_back.erase(held_back.begin(), held_back.begin() + static_cast<std::ptrdiff_t>(released));
 }
 
 void MqttClient::Session::deliver(Inbound in) {
@@ -302,6 +317,62 @@ void MqttClient::Session::wait(std::stop_token& stop, double seconds) {
     wake.wait_for(lock, stop, std::chrono::duration<double>(seconds), [] { return false; });
 }
 
+namespace {
+
+// "13:05:02", local time.
+std::string clock_time(double wall) {
+    const auto t = static_cast<std::time_t>(wall);
+    std::tm local{};
+    localtime_r(&t, &local);
+    char text[16];
+    std::strftime(text, sizeof text, "%H:%M:%S", &local);
+    return text;
+}
+
+double wall_seconds() {
+    return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+void MqttClient::Session::on_lost(int rc) {
+    connected = false;
+    const double now = monotonic_seconds();
+    if (now - connected_at >= stable_s || ++short_in_a_row < takeover_after) {
+        if (now - connected_at >= stable_s) short_in_a_row = 0;
+        warn_once(fmt::format("remote: {}:{}: lost the broker: {}", options.host, options.port, why(rc)));
+        return;
+    }
+    const auto r = takeover.occurred(now, wall_seconds());
+    if (stopping || r.say == RecurringFault::Say::Nothing) return;
+    if (r.say == RecurringFault::Say::Full) {
+        spdlog::warn(
+            "remote: {}:{}: another client with id {} keeps taking the connection (the broker closed it {} "
+            "times "
+            "in a row, each within {:g} s of connecting): two screens with one client id, from a cloned "
+            "/etc/machine-id? Give each screen its own remote.client_id and remote.prefix, or a new machine "
+            "id "
+            "(sudo rm /etc/machine-id && sudo systemd-machine-id-setup, then reboot). Said once, then "
+            "summarised; retrying with a growing delay (up to {:g} s)",
+            options.host, options.port, options.client_id, short_in_a_row, stable_s, options.max_backoff_s);
+        return;
+    }
+    spdlog::warn(
+        "remote: {}:{}: the connection (client id {}) was taken over {} more times since {}, {} in all",
+        options.host, options.port, options.client_id, r.since_said, clock_time(r.said_wall), r.total);
+}
+
+void MqttClient::Session::on_held() {
+    held = true;
+    short_in_a_row = 0;
+    const double last = takeover.last_wall();
+    if (const std::uint64_t total = takeover.clear(); total && !stopping)
+        spdlog::info(
+            "remote: {}:{}: the connection has held for {:g} s: taken over {} times in all, the last "
+            "at {}",
+            options.host, options.port, stable_s, total, clock_time(last));
+}
+
 void MqttClient::Session::run(std::stop_token stop) {
     double backoff = 1.0;
     bool connecting = true;
@@ -317,19 +388,22 @@ void MqttClient::Session::run(std::stop_token stop) {
         flush_outbox();
         int rc = mosquitto_loop(mosq, 50, 1);
         release_held();  // held messages go on as the rate limit refills, even when nothing new arrives
-        if (connected) backoff = 1.0;
+        if (connected && !held && monotonic_seconds() - connected_at >= stable_s) {
+            on_held();
+            backoff = 1.0;  // not before: connections taken over each time back off like failed ones
+        }
         // A host that drops packets never answers the connect: given up, then tried again.
         if (rc == MOSQ_ERR_SUCCESS && !answered && monotonic_seconds() - attempt_started > connect_timeout_s)
             rc = MOSQ_ERR_TIMEOUT;
         if (rc != MOSQ_ERR_SUCCESS) {
             if (connected) {
-                connected = false;
-                warn_once(
-                    fmt::format("remote: {}:{}: lost the broker: {}", options.host, options.port, why(rc)));
+                on_lost(rc);
             } else if (answered) {
+                short_in_a_row = 0;
                 warn_once(fmt::format("remote: {}:{}: the broker closed the connection: {}", options.host,
                                       options.port, why(rc)));
             } else {
+                short_in_a_row = 0;
                 warn_once(fmt::format(
                     "remote: {}:{}: cannot connect to the broker: {}", options.host, options.port,
                     rc == MOSQ_ERR_TIMEOUT ? fmt::format("no answer within {:g} s", connect_timeout_s)

@@ -6,8 +6,9 @@
 // connect_timeout_s), subscribes, publishes `online` retained on the availability topic (the last will,
 // set before connecting, is `offline` retained) and, when the broker is missing, goes away or refuses
 // the credentials, says so once and tries again with a growing delay (1 s doubling to 30 s); the
-// display never notices. A stop never waits for the network beyond stop_limit_s (a host that drops
-// packets, a name lookup with no DNS server): start, stop and the frames are never held by it.
+// display never notices. A connection taken over again and again (another client with the same id) is
+// said once with its cause, then summarised. A stop never waits for the network beyond stop_limit_s (a host
+// that drops packets, a name lookup with no DNS server): start, stop and the frames are never held by it.
 // Messages beyond the rate limit (a burst of 40, then 20 a second) are held back, the newest per topic
 // (a slider dragged in Home Assistant sends many values; the last is the one meant), and passed on as
 // the limit allows; those they replace, and any beyond a full inbox or a full hold, are dropped and
@@ -54,6 +55,12 @@ public:
     // Seconds the destructor waits at most: for the broker to acknowledge what was queued (goodbye_s),
     // then for the network thread; one still inside a network call is left to end on its own.
     static constexpr double goodbye_s = 0.5;
+    // A connection the broker closes within stable_s of making it, takeover_after times in a row with
+    // every reconnect accepted, is taken over by another client with the same id (two screens cloned from
+    // one image): said once with the cause and the fix, then summarised (util/recurring_fault.hpp); the
+    // reconnect delay grows until a connection holds stable_s.
+    static constexpr double stable_s = 60.0;
+    static constexpr int takeover_after = 3;
     static constexpr double stop_limit_s = 0.9;
 
     // Starts the network thread; nothing here touches the network. Errors: libmosquitto refuses the

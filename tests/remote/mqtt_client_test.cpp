@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "support/blackhole_port.hpp"
+#include "support/log_lines.hpp"
 #include "support/mosquitto_broker.hpp"
 #include "util/monotonic_clock.hpp"
 
@@ -87,6 +88,41 @@ TEST(MqttClientStop, ABrokerThatStopsAnsweringHoldsTheStopUnderASecond) {
     client->reset();
     EXPECT_LT(monotonic_seconds() - t0, 1.0);
     broker.signal(SIGCONT);
+}
+
+// Issue 33, item 6: two screens with one client id (cloned from one SD card image) took the connection
+// from each other for ever, a warning every 2 s that never said why. Now: said once per screen, with the
+// cause and the fix, and the reconnects back off.
+TEST(MqttClientTakeover, TwoClientsWithOneIdSayWhyOnceAndBackOff) {
+    if (!mosquitto_available()) GTEST_SKIP() << no_mosquitto;
+    MosquittoBroker broker;
+    ASSERT_TRUE(broker.start()) << broker.log();
+    LogLines lines(spdlog::level::info);
+    // Two host names for one broker, so that each screen's lines can be told apart.
+    auto start = [&](const char* host) {
+        auto c = remote::MqttClient::start(
+            {.host = host, .port = broker.port(), .client_id = "twin", .availability_topic = "twin/status"});
+        EXPECT_TRUE(c) << c.error().message;
+        return c ? std::move(*c) : nullptr;
+    };
+    auto one = start("127.0.0.1");
+    auto two = start("localhost");
+    ASSERT_TRUE(one && two);
+    const std::string cause = "another client with id twin keeps taking the connection";
+    const std::string fix = "remote.client_id";
+    const std::string a = fmt::format("remote: 127.0.0.1:{}: ", broker.port()),
+                      b = fmt::format("remote: localhost:{}: ", broker.port());
+    for (int i = 0; i < 300 && (lines.count(a + cause) == 0 || lines.count(b + cause) == 0); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(lines.count(a + cause), 1);
+    EXPECT_EQ(lines.count(b + cause), 1);
+    EXPECT_EQ(lines.count(fix), 2) << "the line names the fix";
+    const long before = lines.count("remote:");
+    // It goes on (each takes the connection back after its delay), and costs no more lines.
+    std::this_thread::sleep_for(std::chrono::seconds(5));
+    EXPECT_EQ(lines.count("remote:"), before) << "a line per takeover, as before";
+    // Before it was found out: at most two losses per screen, each followed by its reconnect.
+    EXPECT_LE(before, 2 * (2 + 3 + 1)) << "lost, connected (three times), and the cause";
 }
 
 }  // namespace
