@@ -23,6 +23,7 @@
 #include "support/running_puddle.hpp"
 #include "support/test_support.hpp"
 #include "util/monotonic_clock.hpp"
+#include "util/valid_utf8.hpp"
 
 namespace puddle::test {
 namespace {
@@ -147,6 +148,7 @@ TEST_F(RemoteEndToEnd, BadMessagesAreRefusedWithAnErrorReplyAndNothingApplies) {
         {topic("set/rain.intensity"), "lots", "rain.intensity"},
         {topic("command"), "self-destruct", "unknown command"},
         {topic("preset/set"), "no-such-preset", "no-such-preset"},
+        {topic("command"), "\xff\xfenext\xc0", "unknown command"},  // not UTF-8
     };
     for (const Case& c : cases) {
         client->publish(c.topic, c.payload);
@@ -166,6 +168,11 @@ TEST_F(RemoteEndToEnd, BadMessagesAreRefusedWithAnErrorReplyAndNothingApplies) {
     EXPECT_EQ(state["remote.host"], "localhost");
     EXPECT_EQ(state["environment.image"], "");
     EXPECT_EQ(client->received(topic("state/rain.intensity")), (std::vector<std::string>{"0.3", "0.5"}));
+    // Issue 33, item 10: the log quotes the bad payload as valid UTF-8 (U+FFFD for each bad byte).
+    const std::string log = puddle->log();
+    EXPECT_TRUE(is_valid_utf8(log)) << log;
+    EXPECT_NE(log.find("unknown command '\xef\xbf\xbd\xef\xbf\xbdnext\xef\xbf\xbd'"), std::string::npos)
+        << log;
 }
 
 TEST_F(RemoteEndToEnd, DiscoveryConfigsAreValidAndTheirRangesAreTheRegistrys) {
@@ -184,6 +191,9 @@ TEST_F(RemoteEndToEnd, DiscoveryConfigsAreValidAndTheirRangesAreTheRegistrys) {
         components.insert(component);
         EXPECT_TRUE(c.contains("name") && c.contains("unique_id") && c.contains("availability_topic"));
         EXPECT_EQ(c["device"]["identifiers"][0], "puddle-e2e");
+        EXPECT_EQ(c["device"]["name"], "Puddle e2e");
+        EXPECT_EQ(c["default_entity_id"], component + "." + c["object_id"].get<std::string>());
+        EXPECT_EQ(c["name"].get<std::string>().find_first_of("._"), std::string::npos) << c["name"];
         EXPECT_TRUE(c["device"].contains("sw_version") && c["device"].contains("model"));
         if (component == "sensor") {
             EXPECT_EQ(c["state_topic"], topic("health"));
