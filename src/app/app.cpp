@@ -32,6 +32,7 @@
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
 #include "systems/wall_steps.hpp"
+#include "util/valid_utf8.hpp"
 
 namespace puddle::app {
 
@@ -172,7 +173,7 @@ int run(int argc, const char* const* argv) {
     auto options = parse_command_line(argc, argv);
     if (!options) {
         if (options.error().code == ExitCode::Ok) return 0;  // --help, --version
-        std::fprintf(stderr, "%s\n", options.error().message.c_str());
+        std::fprintf(stderr, "%s\n", valid_utf8(options.error().message).c_str());  // as log lines are
         return static_cast<int>(options.error().code);
     }
     CliOptions& o = *options;
