@@ -82,6 +82,8 @@ struct MqttClient::Session {
     // Connections the broker closed soon after making them (within stable_s), one after the other with
     // no failed attempt between: another client with our id takes the connection each time it
     // reconnects (MQTT 3.1.1 does not say so), and we take it back. The third is said with its cause.
+    // A broker that restarts is told apart by the first try after a loss, 1 s later: it finds the broker
+    // away (a restart that takes less, three times in a row, would pass for a takeover).
     double connected_at = 0;  // monotonic seconds
     bool held = false;        // this connection has lasted stable_s
     int short_in_a_row = 0;
@@ -295,6 +297,7 @@ bool MqttClient::Session::connect_once() {
     answered = false;
     attempt_started = monotonic_seconds();
     if (rc != MOSQ_ERR_SUCCESS) {
+        short_in_a_row = 0;  // the broker itself is away (restarting): not a takeover
         warn_once(fmt::format("remote: {}:{}: cannot connect to the broker: {}", options.host, options.port,
                               why(rc)));
         return false;
@@ -349,11 +352,11 @@ void MqttClient::Session::on_lost(int rc) {
         spdlog::warn(
             "remote: {}:{}: another client with id {} keeps taking the connection (the broker closed it {} "
             "times "
-            "in a row, each within {:g} s of connecting): two screens with one client id, from a cloned "
-            "/etc/machine-id? Give each screen its own remote.client_id and remote.prefix, or a new machine "
-            "id "
-            "(sudo rm /etc/machine-id && sudo systemd-machine-id-setup, then reboot). Said once, then "
-            "summarised; retrying with a growing delay (up to {:g} s)",
+            "in a row within {:g} s of accepting it, and took each reconnect at once): two screens with one "
+            "client id, from a cloned /etc/machine-id? Give each screen its own remote.client_id and "
+            "remote.prefix, or a new machine id (sudo rm /etc/machine-id && sudo systemd-machine-id-setup, "
+            "then "
+            "reboot). Said once, then summarised; retrying with a growing delay (up to {:g} s)",
             options.host, options.port, options.client_id, short_in_a_row, stable_s, options.max_backoff_s);
         return;
     }
@@ -388,9 +391,12 @@ void MqttClient::Session::run(std::stop_token stop) {
         flush_outbox();
         int rc = mosquitto_loop(mosq, 50, 1);
         release_held();  // held messages go on as the rate limit refills, even when nothing new arrives
+        // The delay starts again at 1 s on connecting; while the connection is being taken over, only once
+        // one has held (the reconnects back off like failed attempts).
+        if (connected && !takeover.active()) backoff = 1.0;
         if (connected && !held && monotonic_seconds() - connected_at >= stable_s) {
             on_held();
-            backoff = 1.0;  // not before: connections taken over each time back off like failed ones
+            backoff = 1.0;
         }
         // A host that drops packets never answers the connect: given up, then tried again.
         if (rc == MOSQ_ERR_SUCCESS && !answered && monotonic_seconds() - attempt_started > connect_timeout_s)

@@ -57,8 +57,8 @@ public:
     static constexpr double goodbye_s = 0.5;
     // A connection the broker closes within stable_s of making it, takeover_after times in a row with
     // every reconnect accepted, is taken over by another client with the same id (two screens cloned from
-    // one image): said once with the cause and the fix, then summarised (util/recurring_fault.hpp); the
-    // reconnect delay grows until a connection holds stable_s.
+    // one image): said once with the cause and the fix, then summarised (util/recurring_fault.hpp); from
+    // then on the reconnect delay grows until a connection holds stable_s.
     static constexpr double stable_s = 60.0;
     static constexpr int takeover_after = 3;
     static constexpr double stop_limit_s = 0.9;

@@ -125,5 +125,28 @@ TEST(MqttClientTakeover, TwoClientsWithOneIdSayWhyOnceAndBackOff) {
     EXPECT_LE(before, 2 * (2 + 3 + 1)) << "lost, connected (three times), and the cause";
 }
 
+// The other side of the rule: a broker restarted again and again (each time the client finds it away
+// before it is back) closes short connections too, and is not a takeover.
+TEST(MqttClientTakeover, ABrokerRestartedAgainAndAgainIsNotATakeover) {
+    if (!mosquitto_available()) GTEST_SKIP() << no_mosquitto;
+    MosquittoBroker broker;
+    ASSERT_TRUE(broker.start()) << broker.log();
+    LogLines lines(spdlog::level::info);
+    auto client = remote::MqttClient::start(
+        {.host = "127.0.0.1", .port = broker.port(), .client_id = "restarts", .availability_topic = "r/s"});
+    ASSERT_TRUE(client) << client.error().message;
+    for (int restart = 0; restart < 4; ++restart) {
+        const std::uint64_t seen = (*client)->connections();
+        for (int i = 0; i < 1000 && (*client)->connections() == seen; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        ASSERT_GT((*client)->connections(), seen) << "no reconnect after restart " << restart;
+        broker.stop();
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // the client's next try finds none
+        ASSERT_TRUE(broker.start()) << broker.log();
+    }
+    EXPECT_EQ(lines.count("keeps taking the connection"), 0);
+    EXPECT_EQ(lines.count("lost the broker"), 4);
+}
+
 }  // namespace
 }  // namespace puddle::test
