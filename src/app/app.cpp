@@ -178,6 +178,8 @@ int run(int argc, const char* const* argv) {
     CliOptions& o = *options;
     spdlog::set_level(spdlog::level::from_str(o.log_level));
 
+    // A command that ends by itself has no reload to do; SIGINT and SIGTERM end it as any command.
+    if (o.list_params || o.check || o.print_config) release_stop_signals_for_one_shot();
     if (o.list_params) {
         std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(),
                    stdout);
@@ -202,8 +204,8 @@ int run(int argc, const char* const* argv) {
     o.display.mode = params->get<ParamId::display_mode>();
 
     spdlog::info("puddle {} starting", version());
-    // Before any thread starts, so that every thread (Mesa's too) inherits SIGINT, SIGTERM and SIGHUP blocked
-    // and they arrive only through the signalfd.
+    // Before any thread starts (main blocked the three already), so that every thread (Mesa's too) has
+    // SIGINT, SIGTERM and SIGHUP blocked and they arrive only through the signalfd, one sent earlier too.
     auto signals = std::make_unique<StopSignals>();
     ServiceNotify notify = ServiceNotify::from_environment();
     auto engine = Engine::create(*params, o.display, {.background_compiles = true},
