@@ -29,6 +29,7 @@
 #include "params/wall_check.hpp"
 #include "platform/console_mode.hpp"
 #include "systems/live_tuning.hpp"
+#include "schedule/zone_watch.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
 #include "systems/wall_steps.hpp"
@@ -217,9 +218,11 @@ int run(int argc, const char* const* argv) {
     const bool headless = e.display().kind() == platform::BackendKind::Headless;
     const std::string preset = e.world().resource<systems::LiveTuning>().layers.preset_name();
     const auto& caps = e.device().caps();
-    spdlog::info("started: {}; GL: {} ({}); config: {}; preset: {}", e.display().describe(), caps.renderer,
-                 caps.version, config_path(o).empty() ? "none" : config_path(o),
-                 preset.empty() ? "none" : preset);
+    const auto* zone = e.world().try_resource<systems::ZoneCheck>();
+    spdlog::info("started: {}; GL: {} ({}); config: {}; preset: {}; time zone: {}", e.display().describe(),
+                 caps.renderer, caps.version, config_path(o).empty() ? "none" : config_path(o),
+                 preset.empty() ? "none" : preset,
+                 zone ? zone->watch.zone().describe() : schedule::ZoneWatch().zone().describe());
 
     long frames =
         o.frames.value_or(headless && !o.screenshot_at ? headless_default_frames : 0);  // 0: until stopped
