@@ -28,8 +28,8 @@
 #include "params/param_docs.hpp"
 #include "params/wall_check.hpp"
 #include "platform/console_mode.hpp"
-#include "systems/live_tuning.hpp"
 #include "schedule/zone_watch.hpp"
+#include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
 #include "systems/wall_steps.hpp"
@@ -110,6 +110,8 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
         params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
     tuning.config_path = path;
     tuning.preset_folders = preset_folders;
+    if (!o.preset.empty())
+        if (auto r = tuning.layers.set_command_line_preset(o.preset); !r) return r.error();
     if (!path.empty()) {
         auto config = params::load_config_file(path);
         if (!config) return config.error();
