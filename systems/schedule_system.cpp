@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ctime>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 #include "schedule/time_zone.hpp"
@@ -65,7 +66,8 @@ std::optional<schedule::Calendar> make_calendar(const params::Config& config) {
 bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params, double now) {
     const bool reloaded = run.config_generation != tuning.config_generation;
     const bool clock_went_back = run.evaluated && now < run.last_evaluated;
-    if (!reloaded && !clock_went_back && now < run.next_evaluation) return false;
+    const bool zone_changed = std::exchange(run.zone_changed, false);
+    if (!reloaded && !clock_went_back && !zone_changed && now < run.next_evaluation) return false;
     if (reloaded) {
         run.calendar = make_calendar(tuning.layers.config());
         run.config_generation = tuning.config_generation;
@@ -84,7 +86,8 @@ bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params,
     // Knob values are forgotten at a transition only, not when a reload or a clock step re-evaluates.
     bool knobs_cleared = false;
     std::string reason = "schedule";
-    if (run.evaluated && !reloaded && !clock_went_back && last && last->at > run.last_evaluated) {
+    if (run.evaluated && !reloaded && !clock_went_back && !zone_changed && last &&
+        last->at > run.last_evaluated) {
         // A pointer, not a copied optional: GCC 12 at -O3 warned (-Wmaybe-uninitialized) on the copy.
         const schedule::Transition* fired =
             last->kind == schedule::Transition::Kind::fires ? &*last : nullptr;
@@ -100,11 +103,31 @@ bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params,
     run.last_evaluated = now;
     run.next_evaluation = next ? next->at : now + day_seconds;
     if (changed) apply_layers(tuning, params, reason);
-    if (next && (changed || reloaded)) spdlog::info("schedule: next: {}", describe_transition(config, *next));
+    if (next && (changed || reloaded || zone_changed))
+        spdlog::info("schedule: next: {}", describe_transition(config, *next));
     return changed;
 }
 
-void schedule_system(const WallClock& clock, ScheduleRun& run, LiveTuning& tuning, params::Params& params) {
+bool zone_check_step(ZoneCheck& check, std::uint64_t config_generation, double now) {
+    std::optional<schedule::Zone> changed;
+    if (auto done = check.job.take()) changed = std::move(*done);
+    const bool reloaded = std::exchange(check.config_generation, config_generation) != config_generation;
+    // Due a minute after the last look, or at once when the wall clock went back past it.
+    const bool due = now >= check.next_check || now < check.next_check - zone_check_seconds;
+    if (reloaded) {
+        if (auto z = check.watch.refresh()) changed = std::move(z);
+    } else if (due && !check.job.busy()) {
+        check.job.submit([&watch = check.watch](std::stop_token) { return watch.refresh(); });
+    }
+    if (reloaded || due) check.next_check = now + zone_check_seconds;
+    if (!changed) return false;
+    spdlog::info("time zone now {}", changed->describe());
+    return true;
+}
+
+void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, LiveTuning& tuning,
+                     params::Params& params) {
+    if (zone_check_step(zone, tuning.config_generation, clock.seconds())) run.zone_changed = true;
     schedule_step(run, tuning, params, clock.seconds());
 }
 
@@ -140,6 +163,7 @@ std::string local_time_text(double t) {
 Result<void> add_schedule(ecs::World& world, ecs::Schedule& schedule) {
     if (!world.try_resource<WallClock>()) world.insert_resource<WallClock>();
     world.insert_resource<ScheduleRun>();
+    world.insert_resource<ZoneCheck>();
     schedule.add(ecs::Stage::Input, "schedule", schedule_system);
     return {};
 }

@@ -7,6 +7,7 @@
 // the next transition, then the schedule applies again.
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -16,8 +17,10 @@
 #include "params/param_store.hpp"
 #include "params/schedule_spec.hpp"
 #include "schedule/calendar.hpp"
+#include "schedule/zone_watch.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/wall_clock.hpp"
+#include "util/background_job.hpp"
 
 namespace puddle::systems {
 
@@ -30,7 +33,25 @@ struct ScheduleRun {
     double next_evaluation = 0;  // the next transition, or a day later when none is in sight
     bool time_zone_checked =
         false;  // a TZ the C library cannot resolve is logged once, with the first calendar
+    bool zone_changed = false;  // set by zone_check_step: evaluated again, as at a reload
 };
+
+// Resource: the time zone (schedule/zone_watch.hpp), looked at again at each config reload (on the frame
+// thread, which reads the config files then anyway) and every minute on a worker thread (a readlink and a
+// stat), so a `timedatectl set-timezone` applies within a minute, or at once with SIGHUP.
+struct ZoneCheck {
+    explicit ZoneCheck(std::filesystem::path system_zone = "/etc/localtime")
+        : watch(std::move(system_zone)) {}
+    schedule::ZoneWatch watch;
+    BackgroundJob<std::optional<schedule::Zone>> job;  // after `watch`: it goes first, and its job with it
+    std::uint64_t config_generation = ~std::uint64_t{0};
+    double next_check = 0;  // wall-clock seconds
+};
+constexpr double zone_check_seconds = 60;
+
+// At a reload (`config_generation` changed) or when a minute has passed (`now`, wall-clock seconds), looks
+// at the zone; true when it changed, which is then in force and logged ("time zone now ...").
+bool zone_check_step(ZoneCheck& check, std::uint64_t config_generation, double now);
 
 // The calendar of a config's entries (none without entries).
 std::optional<schedule::Calendar> make_calendar(const params::Config& config);
@@ -39,7 +60,9 @@ std::optional<schedule::Calendar> make_calendar(const params::Config& config);
 // layers changed; `params` is then recomposed and the change logged ("schedule: schedule[2] starts: ...").
 bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params, double now);
 // Input stage: schedule_step at the wall clock's time.
-void schedule_system(const WallClock& clock, ScheduleRun& run, LiveTuning& tuning, params::Params& params);
+// A zone change (zone_check_step) is evaluated again as a reload is: no knob is forgotten.
+void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, LiveTuning& tuning,
+                     params::Params& params);
 
 // Start-up and --print-config: the entries active at `now`, set in the layers without clearing knobs.
 void activate_schedule(LiveTuning& tuning, double now);

@@ -28,10 +28,12 @@
 #include "params/param_docs.hpp"
 #include "params/wall_check.hpp"
 #include "platform/console_mode.hpp"
+#include "schedule/zone_watch.hpp"
 #include "systems/live_tuning.hpp"
 #include "systems/puddle_plugin.hpp"
 #include "systems/schedule_system.hpp"
 #include "systems/wall_steps.hpp"
+#include "util/valid_utf8.hpp"
 
 namespace puddle::app {
 
@@ -109,6 +111,8 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, bool read_only) {
         params::ParamLayers(params::Presets::load(preset_folders), std::move(command_line)));
     tuning.config_path = path;
     tuning.preset_folders = preset_folders;
+    if (!o.preset.empty())
+        if (auto r = tuning.layers.set_command_line_preset(o.preset); !r) return r.error();
     if (!path.empty()) {
         auto config = params::load_config_file(path);
         if (!config) return config.error();
@@ -172,12 +176,14 @@ int run(int argc, const char* const* argv) {
     auto options = parse_command_line(argc, argv);
     if (!options) {
         if (options.error().code == ExitCode::Ok) return 0;  // --help, --version
-        std::fprintf(stderr, "%s\n", options.error().message.c_str());
+        std::fprintf(stderr, "%s\n", valid_utf8(options.error().message).c_str());  // as log lines are
         return static_cast<int>(options.error().code);
     }
     CliOptions& o = *options;
     spdlog::set_level(spdlog::level::from_str(o.log_level));
 
+    // A command that ends by itself has no reload to do; SIGINT and SIGTERM end it as any command.
+    if (o.list_params || o.check || o.print_config) release_stop_signals_for_one_shot();
     if (o.list_params) {
         std::fputs((o.markdown ? params::format_params_markdown() : params::format_params_list()).c_str(),
                    stdout);
@@ -202,8 +208,8 @@ int run(int argc, const char* const* argv) {
     o.display.mode = params->get<ParamId::display_mode>();
 
     spdlog::info("puddle {} starting", version());
-    // Before any thread starts, so that every thread (Mesa's too) inherits SIGINT, SIGTERM and SIGHUP blocked
-    // and they arrive only through the signalfd.
+    // Before any thread starts (main blocked the three already), so that every thread (Mesa's too) has
+    // SIGINT, SIGTERM and SIGHUP blocked and they arrive only through the signalfd, one sent earlier too.
     auto signals = std::make_unique<StopSignals>();
     ServiceNotify notify = ServiceNotify::from_environment();
     auto engine = Engine::create(*params, o.display, {.background_compiles = true},
@@ -215,9 +221,11 @@ int run(int argc, const char* const* argv) {
     const bool headless = e.display().kind() == platform::BackendKind::Headless;
     const std::string preset = e.world().resource<systems::LiveTuning>().layers.preset_name();
     const auto& caps = e.device().caps();
-    spdlog::info("started: {}; GL: {} ({}); config: {}; preset: {}", e.display().describe(), caps.renderer,
-                 caps.version, config_path(o).empty() ? "none" : config_path(o),
-                 preset.empty() ? "none" : preset);
+    const auto* zone = e.world().try_resource<systems::ZoneCheck>();
+    spdlog::info("started: {}; GL: {} ({}); config: {}; preset: {}; time zone: {}", e.display().describe(),
+                 caps.renderer, caps.version, config_path(o).empty() ? "none" : config_path(o),
+                 preset.empty() ? "none" : preset,
+                 zone ? zone->watch.zone().describe() : schedule::ZoneWatch().zone().describe());
 
     long frames =
         o.frames.value_or(headless && !o.screenshot_at ? headless_default_frames : 0);  // 0: until stopped

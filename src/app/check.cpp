@@ -21,6 +21,7 @@
 #include "platform/display.hpp"
 #include "platform/drm_inventory.hpp"
 #include "schedule/time_zone.hpp"
+#include "schedule/zone_watch.hpp"
 #include "systems/schedule_system.hpp"
 #include "systems/wall_steps.hpp"
 
@@ -61,6 +62,7 @@ void check_schedule(Report& r, const params::Config& config) {
         return;
     }
     if (const auto problem = schedule::time_zone_problem()) r.fix(*problem);
+    r.ok("time zone: " + schedule::ZoneWatch().zone().describe());
     const double now = systems::system_wall_seconds();
     std::vector<std::string> active;
     for (int i : calendar->active_at(now))

@@ -36,6 +36,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         "  puddle --config /etc/puddle/puddle.toml --set rain.drop_count=40 --set water.turbidity=0.2\n"
         "  puddle --config my.toml --print-config     every value and where it came from (preset, config, "
         "knob...)\n"
+        "  puddle --preset downpour                 a look from the presets (see --print-config for its "
+        "values)\n"
         "Live tuning: an edited config file applies within a moment (or send SIGHUP); a bad edit is logged\n"
         "with file:line and the last good config keeps running. `preset = \"downpour\"` in the config picks\n"
         "a look; [[knob]] tables wire GPIO encoders, buttons and switches (see config/puddle.toml).\n"
@@ -47,6 +49,10 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
                    "TOML config file (default: /etc/puddle/puddle.toml if present)");
     cli.add_option("--set,-s", o.sets,
                    "Set a parameter, e.g. --set rain.drop_count=20 (repeatable; wins over the config)");
+    cli.add_option("--preset,-p", o.preset,
+                   "Start with this preset, a look (downpour, drizzle, mirror, murky_pond, still_night; "
+                   "/etc/puddle/presets and presets/ beside the config add more), instead of the config's "
+                   "`preset =`; --set preset=NAME is the same. A knob's preset button still changes it");
     cli.add_flag("--list-params", o.list_params,
                  "Print every parameter with its type, default, range and meaning");
     cli.add_flag("--markdown", o.markdown, "With --list-params: print the Markdown table the README carries");
@@ -118,6 +124,12 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
     } catch (const CLI::ParseError& e) {
         return make_error(ExitCode::Config, "puddle: {} (see puddle --help)", e.what());
     }
+    // `preset` is no parameter but a new user's first try: --set preset=NAME is --preset NAME.
+    std::erase_if(o.sets, [&](const std::string& a) {
+        if (!a.starts_with("preset=")) return false;
+        o.preset = a.substr(7);
+        return true;
+    });
     if (backend == "kms")
         o.display.backend = platform::BackendKind::Kms;
     else if (backend == "window")

@@ -14,6 +14,7 @@ namespace puddle::app {
 struct CliOptions {
     std::string config_path;        // empty: /etc/puddle/puddle.toml when it exists, else built-in defaults
     std::vector<std::string> sets;  // --set name=value, applied last
+    std::string preset;             // --preset NAME (or --set preset=NAME): instead of the config's preset =
     bool list_params = false;
     bool markdown = false;  // --list-params as the README's Markdown table
     bool print_config = false;

@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <memory>
 
+#include "util/valid_utf8.hpp"
+
 namespace puddle::app {
 
 namespace {
@@ -45,6 +47,18 @@ public:
     std::unique_ptr<custom_flag_formatter> clone() const override { return std::make_unique<PriorityFlag>(); }
 };
 
+// "%~" in a pattern: the message as valid UTF-8. A line may quote bytes from anywhere (a payload from the
+// broker, a file name); the journal, terminals and log shippers need UTF-8, so invalid bytes are U+FFFD.
+class ValidUtf8Message : public spdlog::custom_flag_formatter {
+public:
+    void format(const spdlog::details::log_msg& msg, const std::tm&, spdlog::memory_buf_t& dest) override {
+        append_valid_utf8(std::string_view(msg.payload.data(), msg.payload.size()), dest);
+    }
+    std::unique_ptr<custom_flag_formatter> clone() const override {
+        return std::make_unique<ValidUtf8Message>();
+    }
+};
+
 }  // namespace
 
 LogStyle detect_log_style() {
@@ -64,18 +78,19 @@ LogStyle detect_log_style() {
 void setup_logging(LogStyle style) {
     std::shared_ptr<spdlog::logger> logger;
     auto formatter = std::make_unique<spdlog::pattern_formatter>();
+    formatter->add_flag<ValidUtf8Message>('~');  // "%~", never "%v": see ValidUtf8Message
     switch (style) {
         case LogStyle::Terminal:
             logger = spdlog::stderr_color_mt("puddle");
-            formatter->set_pattern("%^%l%$: %v");
+            formatter->set_pattern("%^%l%$: %~");
             break;
         case LogStyle::Journal:
             logger = spdlog::stderr_logger_mt("puddle");
-            formatter->add_flag<PriorityFlag>('*').set_pattern("%*%v");
+            formatter->add_flag<PriorityFlag>('*').set_pattern("%*%~");
             break;
         case LogStyle::Plain:
             logger = spdlog::stderr_logger_mt("puddle");
-            formatter->set_pattern("%l: %v");
+            formatter->set_pattern("%l: %~");
             break;
     }
     logger->set_formatter(std::move(formatter));

@@ -10,6 +10,7 @@
 #include "remote/health.hpp"
 #include "remote/state_json.hpp"
 #include "util/monotonic_clock.hpp"
+#include "util/safe_quote.hpp"
 
 namespace puddle::app {
 
@@ -120,6 +121,15 @@ void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, Frame
         auto request = remote::parse_request(r.settings, m);
         if (!request) {
             r.reply_error(m.topic, request.error().message);
+            continue;
+        }
+        if (std::holds_alternative<remote::RetainedCommand>(*request)) {
+            if (r.retained_reported.insert(m.topic).second)
+                r.reply_error(
+                    m.topic, fmt::format("remote: {}: retained commands are ignored ('{}' is retained on the "
+                                         "broker, which replays it at every connect; clear it with "
+                                         "mosquitto_pub -r -n -t '{}')",
+                                         safe_quote(m.topic), safe_quote(m.payload), safe_quote(m.topic)));
             continue;
         }
         if (auto applied = apply(r, tuning, capture, *request); !applied)

@@ -4,7 +4,8 @@
 //   input:   remote commands  takes what the network thread received (never waits for it) and applies
 //                             it to live tuning's layers: a parameter (source Remote, saved with the
 //                             knob state), a preset, a command; a bad message is one warning and a reply
-//                             on <prefix>/error, nothing applied
+//                             on <prefix>/error, nothing applied; a retained command is never applied
+//                             (one warning per topic)
 //   present: remote publish   after the present: the screenshot of the frame just shown (read back by
 //                             the capture system before it), the state when Params changed or after a
 //                             (re)connect, health every remote.health_interval seconds, discovery
@@ -12,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,9 @@ struct RemoteControl {
     FrameStats stats;
     const systems::CameraFeed* camera = nullptr;  // for the dropped-frame count, when the puddle has one
     bool screenshot_wanted = false;               // a capture was asked for and not yet taken
+    // Command topics a retained message was ignored on, said once each (the broker replays it at every
+    // reconnect).
+    std::set<std::string> retained_reported;
     std::unique_ptr<BackgroundJob<std::string>> encoder = std::make_unique<BackgroundJob<std::string>>();
 
     explicit RemoteControl(remote::RemoteSettings s)

@@ -5,12 +5,32 @@
 
 namespace puddle::app {
 
-StopSignals::StopSignals() {
+namespace {
+
+sigset_t stop_set() {
     sigset_t set;
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
     sigaddset(&set, SIGHUP);
+    return set;
+}
+
+}  // namespace
+
+void block_stop_signals() {
+    const sigset_t set = stop_set();
+    sigprocmask(SIG_BLOCK, &set, nullptr);  // one thread yet: the process's mask
+}
+
+void release_stop_signals_for_one_shot() {
+    std::signal(SIGHUP, SIG_IGN);  // discards a pending SIGHUP too (POSIX): it is no stop
+    const sigset_t set = stop_set();
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+}
+
+StopSignals::StopSignals() {
+    const sigset_t set = stop_set();
     pthread_sigmask(SIG_BLOCK, &set, &previous_);
     fd_.reset(signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC));
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "assets/image_module_abi.h"
+#include "assets/orientation.hpp"
 #include "assets/png_reader.hpp"
 
 namespace {
@@ -88,6 +89,22 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const char* path, std::string& wh
     return in;
 }
 
+// The EXIF/TIFF orientation OpenImageIO read from the file's metadata (1, upright, when it has none).
+int orientation_of(const OIIO::ImageSpec& spec) {
+    return puddle::assets::valid_orientation(spec.get_int_attribute("Orientation", 1));
+}
+
+// Expands `raw` to RGBA in `dst`, turned upright when `orientation` says the file was stored turned.
+template <class T>
+void to_upright_rgba(const std::vector<T>& raw, int channels, const OIIO::ImageSpec& spec, int orientation,
+                     T opaque, T* dst) {
+    const std::size_t w = static_cast<std::size_t>(spec.width), h = static_cast<std::size_t>(spec.height);
+    if (orientation == 1) return expand_to_rgba<T>(raw, channels, w * h, opaque, dst);
+    std::vector<T> stored(w * h * 4);
+    expand_to_rgba<T>(raw, channels, w * h, opaque, stored.data());
+    puddle::assets::orient_pixels(stored.data(), w, h, 4, orientation, dst);
+}
+
 int probe(const char* path, PuddleImageInfo* info, char* error, std::size_t error_size) {
     std::string why;
     if (puddle::assets::png::has_signature(path))
@@ -95,8 +112,10 @@ int probe(const char* path, PuddleImageInfo* info, char* error, std::size_t erro
     auto in = open_checked(path, why);
     if (!in) return fail(error, error_size, why);
     const OIIO::ImageSpec& spec = in->spec();
-    *info = PuddleImageInfo{
-        .width = spec.width, .height = spec.height, .is_float = is_float_type(spec.format) ? 1 : 0};
+    const bool swap = puddle::assets::orientation_swaps_axes(orientation_of(spec));  // the size as shown
+    *info = PuddleImageInfo{.width = swap ? spec.height : spec.width,
+                            .height = swap ? spec.width : spec.height,
+                            .is_float = is_float_type(spec.format) ? 1 : 0};
     return 1;
 }
 
@@ -111,7 +130,11 @@ int read(const char* path, int want, PuddleImageAlloc alloc, void* context, char
 
     const bool as_float =
         want == PUDDLE_IMAGE_RGBA32F || (want == PUDDLE_IMAGE_AS_STORED && is_float_type(spec.format));
-    void* dst = alloc(context, spec.width, spec.height, as_float ? 1 : 0);
+    // Pixels are handed over upright (orientation.hpp), in the size viewers show.
+    const int orientation = orientation_of(spec);
+    const bool swap = puddle::assets::orientation_swaps_axes(orientation);
+    void* dst =
+        alloc(context, swap ? spec.height : spec.width, swap ? spec.width : spec.height, as_float ? 1 : 0);
     if (dst == nullptr) return fail(error, error_size, "cannot read: no memory for the pixels");
 
     // Channels past RGBA (depth, extra AOVs) are never read.
@@ -122,11 +145,13 @@ int read(const char* path, int want, PuddleImageAlloc alloc, void* context, char
     if (!as_float) {
         std::vector<std::uint8_t> raw(pixels * static_cast<std::size_t>(channels));
         ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data());
-        if (ok) expand_to_rgba<std::uint8_t>(raw, channels, pixels, 255, static_cast<std::uint8_t*>(dst));
+        if (ok)
+            to_upright_rgba<std::uint8_t>(raw, channels, spec, orientation, 255,
+                                          static_cast<std::uint8_t*>(dst));
     } else {
         std::vector<float> raw(pixels * static_cast<std::size_t>(channels));
         ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data());
-        if (ok) expand_to_rgba<float>(raw, channels, pixels, 1.0f, static_cast<float*>(dst));
+        if (ok) to_upright_rgba<float>(raw, channels, spec, orientation, 1.0f, static_cast<float*>(dst));
     }
     // Some readers (JPEG) pad a truncated file and only record an error: treat that as corrupt too.
     if (ok && in->has_error()) ok = false;

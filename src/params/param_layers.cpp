@@ -31,11 +31,28 @@ Result<void> ParamLayers::resolve_preset(const std::string& name, Config& out) c
     return {};
 }
 
-Result<void> ParamLayers::set_config(Config config) {
-    const std::string name = knob_preset_.empty() ? config.preset.value_or("") : knob_preset_;
+Result<void> ParamLayers::set_command_line_preset(const std::string& name) {
     Config preset;
     if (auto r = resolve_preset(name, preset); !r) {
-        if (!knob_preset_.empty()) return r;
+        std::string_view inner = r.error().message;
+        if (inner.starts_with("config: ")) inner.remove_prefix(8);
+        return make_error(ExitCode::Config, "--preset {}: {}", safe_quote(name), inner);
+    }
+    command_line_preset_ = name;
+    if (knob_preset_.empty()) {
+        preset_ = std::move(preset);
+        preset_name_ = name;
+    }
+    return {};
+}
+
+Result<void> ParamLayers::set_config(Config config) {
+    const std::string configured =
+        command_line_preset_.empty() ? config.preset.value_or("") : command_line_preset_;
+    const std::string name = knob_preset_.empty() ? configured : knob_preset_;
+    Config preset;
+    if (auto r = resolve_preset(name, preset); !r) {
+        if (!knob_preset_.empty() || !command_line_preset_.empty()) return r;
         // "config: PRESET:2: ..." (a broken preset file) already names its file; say which line chose it.
         std::string_view inner = r.error().message;
         if (inner.starts_with("config: ")) inner.remove_prefix(8);
@@ -77,7 +94,9 @@ Result<void> ParamLayers::set_presets_and_config(Presets presets, Config config)
 }
 
 Result<void> ParamLayers::select_preset(const std::string& name) {
-    const std::string effective = name.empty() ? config_.preset.value_or("") : name;
+    const std::string configured =
+        command_line_preset_.empty() ? config_.preset.value_or("") : command_line_preset_;
+    const std::string effective = name.empty() ? configured : name;
     Config preset;
     if (auto r = resolve_preset(effective, preset); !r) return r;
     knob_preset_ = name;

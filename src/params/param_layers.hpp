@@ -29,6 +29,9 @@ public:
     Result<void> set_presets_and_config(Presets presets, Config config);
     const Config& config() const { return config_; }
 
+    // `--preset NAME`: used instead of the config's `preset =` (now and at every reload); a knob's choice
+    // still wins over it, as over the config's. Errors: "--preset NAME: ..." when there is no such preset.
+    Result<void> set_command_line_preset(const std::string& name);
     // A preset chosen with a knob's button; it wins over the config's `preset =`. Empty: the config's.
     Result<void> select_preset(const std::string& name);
     // The preset in effect ("" for none).
@@ -72,6 +75,7 @@ private:
     std::string preset_name_;
     Config preset_;
     std::string knob_preset_;
+    std::string command_line_preset_;  // --preset; empty: the config's
     std::array<std::optional<ParamValue>, param_count> knob_{};
     std::array<bool, param_count> remote_{};  // knob_[id] came from the broker
     std::vector<ConfigEntry> command_line_;

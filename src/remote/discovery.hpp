@@ -1,7 +1,10 @@
 #pragma once
 // Home Assistant MQTT discovery (https://www.home-assistant.io/integrations/mqtt/#mqtt-discovery): one
 // retained config per entity under homeassistant/<component>/<node id>/<object id>/config, all naming
-// the same device (identifiers, name, model, software version), generated from the registry:
+// the same device (identifiers, name, model, software version), generated from the registry. Each has
+// a readable name ("Rain drop count", "Next preset") shown after the device's ("Puddle lobby"), and its
+// entity id as both object_id (Home Assistant before 2025.10) and default_entity_id ("number.
+// puddle_lobby_rain_drop_count"; 2025.10 and later, which ignore object_id from 2026.4):
 //   number  an int or float parameter (min, max, step and unit from its declaration)
 //   select  an enum parameter, and the preset
 //   switch  a bool parameter
@@ -13,6 +16,7 @@
 // topics removes the entities (clear_discovery).
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "remote/mqtt_client.hpp"
@@ -25,6 +29,10 @@ inline constexpr const char* discovery_root = "homeassistant";
 // The client id (default puddle-<device id>), with every character other than letters, digits, '_' and
 // '-' as '_': unique per screen, as the broker already requires of client ids.
 std::string node_id(const RemoteSettings& settings);
+// A key as people read it: "rain.drop_count" -> "Rain drop count", "next-preset" -> "Next preset".
+std::string readable_name(std::string_view key);
+// "Puddle <settings.screen_name>" ("Puddle lobby"), the client id where there is no screen name.
+std::string device_name(const RemoteSettings& settings);
 
 // Which health sensors this screen has: the SoC temperature only where /sys/class/thermal has a zone, so
 // that Home Assistant shows no sensor that stays "unknown".

@@ -67,6 +67,10 @@ Result<ApplyAt> take_apply_at(std::string_view topic, std::string_view& payload)
 }  // namespace
 
 Result<Request> parse_request(const RemoteSettings& s, const Inbound& m) {
+    const std::string_view rest = after_prefix(s, m.topic);
+    const bool command_topic = rest.starts_with("set/") || rest == "preset/set" || rest == "command";
+    // Before anything else: a retained command is never applied, whatever it holds.
+    if (command_topic && m.retained) return Request(RetainedCommand{});
     if (m.size > max_payload_bytes)
         return make_error(ExitCode::Config, "remote: {}: payload of {} bytes refused (at most {})",
                           safe_quote(m.topic), m.size, max_payload_bytes);
@@ -75,7 +79,7 @@ Result<Request> parse_request(const RemoteSettings& s, const Inbound& m) {
         if (payload == "online") return Request(HomeAssistantOnline{});
         return Request(Ignored{});
     }
-    const std::string_view rest = after_prefix(s, m.topic);
+    if (command_topic && payload.empty()) return Request(Ignored{});  // a retained message cleared
     if (rest.starts_with("set/") || rest == "preset/set") {
         auto apply_at = take_apply_at(m.topic, payload);
         if (!apply_at) return apply_at.error();

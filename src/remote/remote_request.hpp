@@ -20,11 +20,13 @@ namespace puddle::remote {
 inline constexpr std::size_t max_payload_bytes = 4096;
 
 // As the network thread hands it over. `size` is the payload's size on the wire; an oversized payload
-// arrives with `payload` empty.
+// arrives with `payload` empty. `retained`: the broker's retain flag, set when the message comes from
+// its store (replayed at every subscription, so at every reconnect and restart), not sent just now.
 struct Inbound {
     std::string topic;
     std::string payload;
     std::size_t size = 0;
+    bool retained = false;
 };
 
 // When a change is to apply, for the screens of a wall (wall.clock = "realtime"): nanoseconds since the
@@ -38,16 +40,23 @@ struct SetParam {
     ApplyAt apply_at_ns;
 };
 struct SelectPreset {
-    std::string name;  // "" (or "none"): the config's preset
+    std::string name;  // "" (spelled "none" on the topic): the config's preset
     ApplyAt apply_at_ns;
 };
 enum class Command { NextPreset, PreviousPreset, Save, Screenshot, Reload };
 struct HomeAssistantOnline {};  // homeassistant/status = online: publish discovery again
-struct Ignored {};              // homeassistant/status = offline
-using Request = std::variant<SetParam, SelectPreset, Command, HomeAssistantOnline, Ignored>;
+// homeassistant/status = offline; an empty payload on a command topic (a retained message cleared:
+// `mosquitto_pub -r -n`, which the broker passes on to those subscribed).
+struct Ignored {};
+// A retained message on a command topic: not applied. A command is an event; a retained one would be
+// replayed at every reconnect and restart (a preset stepped and saved each time, a set overriding every
+// later one).
+struct RetainedCommand {};
+using Request = std::variant<SetParam, SelectPreset, Command, HomeAssistantOnline, Ignored, RetainedCommand>;
 
 // Topics: <prefix>/set/<parameter>, <prefix>/preset/set and <prefix>/command, under `settings.prefix`
-// or `settings.fleet_prefix`, and homeassistant/status; set and preset/set payloads may end in an
+// or `settings.fleet_prefix` (the command topics: never retained, RetainedCommand; an empty payload is
+// Ignored), and homeassistant/status (a state: may be retained); set and preset/set payloads may end in an
 // apply_at (above). Errors (one line, "remote: TOPIC: why"): payload
 // too large, a topic that is none of these, an unknown parameter (with the nearest name), one that is not
 // writable (remote.writable), a value of the wrong kind or out of range (what is allowed), an unknown

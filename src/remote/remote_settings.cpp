@@ -10,12 +10,22 @@ namespace puddle::remote {
 
 using params::ParamId;
 
+namespace {
+
+// "" when there is none.
+std::string host_name() {
+    std::array<char, 256> host{};
+    if (gethostname(host.data(), host.size() - 1) == 0) return host.data();
+    return "";
+}
+
+}  // namespace
+
 std::string device_id(const std::string& machine_id_file) {
     std::ifstream in(machine_id_file);
     std::string line;
     if (in && std::getline(in, line) && line.size() >= 12) return line.substr(0, 12);
-    std::array<char, 256> host{};
-    if (gethostname(host.data(), host.size() - 1) == 0 && host[0] != '\0') return host.data();
+    if (std::string host = host_name(); !host.empty()) return host;
     return "unknown";
 }
 
@@ -42,7 +52,12 @@ Result<RemoteSettings> remote_settings(const params::Params& p) {
     s.port = p.get<ParamId::remote_port>();
     s.device_id = device_id();
     s.client_id = p.get<ParamId::remote_client_id>();
-    if (s.client_id.empty()) s.client_id = "puddle-" + s.device_id;
+    s.screen_name = s.client_id.starts_with("puddle-") ? s.client_id.substr(7) : s.client_id;
+    if (s.client_id.empty()) {
+        s.client_id = "puddle-" + s.device_id;
+        s.screen_name = host_name();
+        if (s.screen_name.empty()) s.screen_name = s.device_id;
+    }
     s.prefix = p.get<ParamId::remote_prefix>();
     if (s.prefix.empty()) s.prefix = "puddle/" + s.device_id;
     s.fleet_prefix = p.get<ParamId::remote_fleet_prefix>();

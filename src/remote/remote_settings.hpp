@@ -4,8 +4,9 @@
 // from its file.
 //
 // Topics under the prefix P (README "Remote control" has the table):
-//   in:  P/set/<parameter>  P/preset/set  P/command   (the same three under the fleet prefix)
-//        homeassistant/status ("online": discovery is published again)
+//   in:  P/set/<parameter>  P/preset/set  P/command   (the same three under the fleet prefix; commands,
+//        so a retained message there is ignored: remote_request.hpp)
+//        homeassistant/status ("online": discovery is published again; may be retained)
 //   out: P/availability  P/state  P/state/<parameter>  P/preset  P/health  P/screenshot  P/error
 
 #include <string>
@@ -22,6 +23,9 @@ struct RemoteSettings {
     int port = 1883;
     std::string device_id;  // the first 12 characters of /etc/machine-id, or the host name
     std::string client_id;
+    // What people call this screen (Home Assistant's device "Puddle <screen name>"): remote.client_id
+    // when set (less a leading "puddle-"), else the host name, else the device id.
+    std::string screen_name;
     std::string prefix;        // "puddle/<device id>", no trailing '/'
     std::string fleet_prefix;  // "" for none
     int keepalive_s = 30;

@@ -161,7 +161,8 @@ double local_time(long day, int minutes) {
         }
     }
     if (found) return static_cast<double>(best);
-    // Skipped by the clocks going forward: it happens at the jump, found by bisection between the readings.
+    // Skipped by the clocks going forward: read with the offset in force before the jump, so it is moved
+    // forward by the gap (02:30 in a 02:00-03:00 gap is 03:30). The jump is found by bisection.
     std::time_t lo = std::min(wall - offsets[0], wall - offsets[1]),
                 hi = std::max(wall - offsets[0], wall - offsets[1]);
     const long before = local_tm(lo).tm_gmtoff;
@@ -169,7 +170,7 @@ double local_time(long day, int minutes) {
         const std::time_t mid = lo + (hi - lo) / 2;
         (local_tm(mid).tm_gmtoff == before ? lo : hi) = mid;
     }
-    return static_cast<double>(hi);
+    return static_cast<double>(wall - local_tm(hi - 1).tm_gmtoff);
 }
 
 Calendar::Calendar(std::vector<Rule> rules, std::optional<Location> where)
@@ -202,7 +203,12 @@ void Calendar::occurrences(long first_day, long last_day, std::vector<Transition
             if (!r.from || !r.to) continue;
             const auto start = resolve(day, *r.from);
             auto end = resolve(day, *r.to);
-            if (start && end && *end <= *start) end = resolve(day + 1, *r.to);
+            // Two clock times compare as written: on a day the clocks move, 02:00 to 03:00 may resolve to
+            // one instant (02:00 skipped), and that window is empty that day, not a day long.
+            const bool clock_times =
+                r.from->anchor == TimeOfDay::Anchor::clock && r.to->anchor == TimeOfDay::Anchor::clock;
+            if (start && end && (clock_times ? r.to->minutes <= r.from->minutes : *end <= *start))
+                end = resolve(day + 1, *r.to);
             if (!start || !end || *end <= *start) continue;
             out.push_back({*start, i, Transition::Kind::starts});
             out.push_back({*end, i, Transition::Kind::ends});

@@ -5,9 +5,13 @@
 //
 // Rules, as the README states them:
 // - `days` names the days a window starts (or an instant fires) on; a window whose `to` is not after
-//   its `from` ends on the next day (`from = "23:00"`, `to = "07:00"`).
-// - A clock time that does not exist (skipped when the clocks go forward) happens when the clocks jump;
-//   one that happens twice (when they go back) happens the first time.
+//   its `from` (as written, for two clock times) ends on the next day (`from = "23:00"`, `to = "07:00"`).
+// - One rule for the days the clocks move, as RFC 5545 and java.time have it: a clock time is read with
+//   the UTC offset in force before the change. So a time that does not exist (skipped when the clocks go
+//   forward) is moved forward by the gap (02:30 in a 02:00-03:00 gap is 03:30), and one that happens
+//   twice (when they go back) happens the first time. A window's length then differs from other days'
+//   by at most the clock change (02:00 to 03:00 is empty on the spring day and two hours in autumn).
+// - A window that is empty on a day (from and to the same instant) does not happen that day.
 // - An instant entry stays active until another instant entry fires.
 // - Several active entries apply in file order, so the later entry in the file wins.
 // - A sunrise or sunset that does not happen (polar day or night) skips that day's occurrence.

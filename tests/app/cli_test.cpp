@@ -95,6 +95,16 @@ TEST(Cli, SetIsRepeatableAndKeepsOrder) {
               (std::vector<std::string>{"rain.drop_count=20", "water.turbidity=0.2", "rain.drop_count=30"}));
 }
 
+// A new user's first try was --set preset=downpour: it is --preset downpour, as -p is.
+TEST(Cli, PresetByItsOptionOrAsASet) {
+    EXPECT_EQ(parse_ok({"--preset", "downpour"}).preset, "downpour");
+    EXPECT_EQ(parse_ok({"-p", "mirror"}).preset, "mirror");
+    const CliOptions o = parse_ok({"--set", "rain.drop_count=20", "--set", "preset=downpour"});
+    EXPECT_EQ(o.preset, "downpour");
+    EXPECT_EQ(o.sets, (std::vector<std::string>{"rain.drop_count=20"})) << "no parameter called preset";
+    EXPECT_EQ(parse_ok({}).preset, "");
+}
+
 TEST(Cli, SetValuesAreNotCheckedHere) {
     // --set is validated later, against the registry, where the message can name the parameter.
     EXPECT_EQ(parse_ok({"--set", "no.such=1"}).sets, (std::vector<std::string>{"no.such=1"}));
@@ -156,6 +166,8 @@ TEST(Cli, HelpAndVersionExitWithOk) {
     EXPECT_EQ(help.error().code, ExitCode::Ok);
     EXPECT_TRUE(has_text(help_text, "--set")) << help_text;
     EXPECT_TRUE(has_text(help_text, "--list-params")) << help_text;
+    EXPECT_TRUE(has_text(help_text, "--preset")) << help_text;
+    EXPECT_TRUE(has_text(help_text, "--set preset=NAME is the same")) << help_text;
 
     testing::internal::CaptureStdout();
     auto short_help = parse({"-h"});

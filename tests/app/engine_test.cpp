@@ -30,7 +30,7 @@ std::vector<std::string> binary_schedule() {
         "input/gpu timer begin if output on (writes AdaptiveScale)",
         "input/reload signal (writes StopSignals, LiveTuning)",
         "input/live tuning (writes LiveTuning, Params)",
-        "input/schedule (reads WallClock; writes ScheduleRun, LiveTuning, Params)",
+        "input/schedule (reads WallClock; writes ZoneCheck, ScheduleRun, LiveTuning, Params)",
         "input/display power (reads Params; writes Display, Device, OutputPower, DisplayPower)",
         "input/synced changes if wall.clock is realtime (reads WallClock, FrameClock, OutputPower; writes "
         "LiveTuning, Params, WallSteps)",

@@ -71,5 +71,46 @@ TEST(Logging, AFileOrPipeGetsPlainLevelsWithoutEscapeCodes) {
     EXPECT_EQ(text.str(), "warning: something\n");
 }
 
+// Issue 33, item 10: a command payload of invalid UTF-8 was clean in the MQTT reply but written raw into
+// the log (and so into the journal). Every line is valid UTF-8, in every style; valid text is untouched.
+TEST(Logging, EveryLineIsValidUtf8WhateverItQuotes) {
+    for (const char* journal : {"", "journal"}) {
+        SCOPED_TRACE(*journal ? "journal" : "plain");
+        test::TempDir dir;
+        const std::string path = (dir / "log.txt").string();
+        std::fflush(stderr);
+        const int saved = ::dup(STDERR_FILENO);
+        FILE* f = std::fopen(path.c_str(), "w");
+        ::dup2(::fileno(f), STDERR_FILENO);
+        struct stat st {};
+        ::fstat(STDERR_FILENO, &st);
+        ::unsetenv("JOURNAL_STREAM");
+        if (*journal)
+            ::setenv("JOURNAL_STREAM", (std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino)).c_str(),
+                     1);
+        spdlog::drop("puddle");
+        setup_logging(detect_log_style());
+        spdlog::warn("remote: puddle/a/command: unknown command '{}'", "\xff\xfenext\xc0\xaf");
+        spdlog::info(
+            "sensor: SoC temperature 51 \xc2\xb0"
+            "C");
+        spdlog::default_logger()->flush();
+        ::dup2(saved, STDERR_FILENO);
+        ::close(saved);
+        std::fclose(f);
+        spdlog::drop("puddle");
+        ::unsetenv("JOURNAL_STREAM");
+        std::ifstream in(path);
+        std::stringstream text;
+        text << in.rdbuf();
+        const std::string r = "\xef\xbf\xbd";
+        const std::string warn = *journal ? "<4>" : "warning: ", info = *journal ? "<6>" : "info: ";
+        EXPECT_EQ(text.str(), warn + "remote: puddle/a/command: unknown command '" + r + r + "next" + r + r +
+                                  "'\n" + info +
+                                  "sensor: SoC temperature 51 \xc2\xb0"
+                                  "C\n");
+    }
+}
+
 }  // namespace
 }  // namespace puddle::app

@@ -80,6 +80,32 @@ TEST(ParamLayers, AKnobPresetWinsOverTheConfigsAndClearingItGoesBack) {
     EXPECT_EQ(l.preset_name(), "mirror");
 }
 
+// --preset NAME (a new user's first try was --set preset=downpour): instead of the config's `preset =`,
+// with or without a config, at every reload; a knob's choice still wins; an unknown name lists the choices.
+TEST(ParamLayers, ACommandLinePresetReplacesTheConfigsAndAKnobStillWins) {
+    ParamLayers l = layers();
+    ASSERT_TRUE(l.set_command_line_preset("downpour"));
+    EXPECT_EQ(l.preset_name(), "downpour") << "without a config";
+    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 100);
+    EXPECT_EQ(l.compose().source(ParamId::rain_drop_count), ParamSource::Preset);
+    ASSERT_TRUE(l.set_config(config("preset = \"mirror\"\n")));
+    EXPECT_EQ(l.preset_name(), "downpour") << "over the config's";
+    ASSERT_TRUE(l.set_config(config("[rain]\nintensity = 0.6\n")));  // a reload
+    EXPECT_EQ(l.preset_name(), "downpour");
+    EXPECT_FLOAT_EQ(l.compose().get<ParamId::rain_intensity>(), 0.6f) << "config values over the preset's";
+    ASSERT_TRUE(l.select_preset("drizzle"));
+    EXPECT_EQ(l.preset_name(), "drizzle");
+    ASSERT_TRUE(l.select_preset(""));
+    EXPECT_EQ(l.preset_name(), "downpour") << "cleared, the knob goes back to --preset's";
+    const auto bad = l.set_command_line_preset("donwpour");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().code, ExitCode::Config);
+    EXPECT_NE(bad.error().message.find("--preset"), std::string::npos) << bad.error().message;
+    EXPECT_NE(bad.error().message.find("downpour"), std::string::npos)
+        << "lists them: " << bad.error().message;
+    EXPECT_EQ(l.preset_name(), "downpour") << "unchanged";
+}
+
 TEST(ParamLayers, StateTextRoundTripsThroughTheConfigParser) {
     ParamLayers l = layers();
     l.set_knob(ParamId::rain_intensity, 0.55f);

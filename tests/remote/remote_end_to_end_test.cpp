@@ -18,9 +18,12 @@
 #include "params/registry.hpp"
 #include "remote/remote_request.hpp"
 #include "remote/writable_patterns.hpp"
+#include "support/blackhole_port.hpp"
 #include "support/mosquitto_broker.hpp"
 #include "support/running_puddle.hpp"
 #include "support/test_support.hpp"
+#include "util/monotonic_clock.hpp"
+#include "util/valid_utf8.hpp"
 
 namespace puddle::test {
 namespace {
@@ -145,6 +148,7 @@ TEST_F(RemoteEndToEnd, BadMessagesAreRefusedWithAnErrorReplyAndNothingApplies) {
         {topic("set/rain.intensity"), "lots", "rain.intensity"},
         {topic("command"), "self-destruct", "unknown command"},
         {topic("preset/set"), "no-such-preset", "no-such-preset"},
+        {topic("command"), "\xff\xfenext\xc0", "unknown command"},  // not UTF-8
     };
     for (const Case& c : cases) {
         client->publish(c.topic, c.payload);
@@ -164,6 +168,11 @@ TEST_F(RemoteEndToEnd, BadMessagesAreRefusedWithAnErrorReplyAndNothingApplies) {
     EXPECT_EQ(state["remote.host"], "localhost");
     EXPECT_EQ(state["environment.image"], "");
     EXPECT_EQ(client->received(topic("state/rain.intensity")), (std::vector<std::string>{"0.3", "0.5"}));
+    // Issue 33, item 10: the log quotes the bad payload as valid UTF-8 (U+FFFD for each bad byte).
+    const std::string log = puddle->log();
+    EXPECT_TRUE(is_valid_utf8(log)) << log;
+    EXPECT_NE(log.find("unknown command '\xef\xbf\xbd\xef\xbf\xbdnext\xef\xbf\xbd'"), std::string::npos)
+        << log;
 }
 
 TEST_F(RemoteEndToEnd, DiscoveryConfigsAreValidAndTheirRangesAreTheRegistrys) {
@@ -182,6 +191,9 @@ TEST_F(RemoteEndToEnd, DiscoveryConfigsAreValidAndTheirRangesAreTheRegistrys) {
         components.insert(component);
         EXPECT_TRUE(c.contains("name") && c.contains("unique_id") && c.contains("availability_topic"));
         EXPECT_EQ(c["device"]["identifiers"][0], "puddle-e2e");
+        EXPECT_EQ(c["device"]["name"], "Puddle e2e");
+        EXPECT_EQ(c["default_entity_id"], component + "." + c["object_id"].get<std::string>());
+        EXPECT_EQ(c["name"].get<std::string>().find_first_of("._"), std::string::npos) << c["name"];
         EXPECT_TRUE(c["device"].contains("sw_version") && c["device"].contains("model"));
         if (component == "sensor") {
             EXPECT_EQ(c["state_topic"], topic("health"));
@@ -298,6 +310,65 @@ TEST_F(RemoteEndToEnd, BrokerRestartReconnectsAndRepublishesAndTheDisplayRunsOn)
         << puddle->log();
 }
 
+// Issue 33, item 4: a retained next-preset stepped (and saved) the preset at every reconnect, and a
+// retained set overrode every later plain one. A broker with persistence keeps them across its restart,
+// as a real one does: ignored each time, said once per topic, and clearing them is no error.
+TEST_F(RemoteEndToEnd, RetainedCommandsAreIgnoredAtEveryReconnectAndSaidOncePerTopic) {
+    const int port = free_port();
+    const auto store = dir / "broker";
+    std::filesystem::create_directories(store);
+    client.reset();
+    broker = std::make_unique<MosquittoBroker>(
+        port, fmt::format("listener {} 127.0.0.1\nallow_anonymous true\nuser root\npersistence true\n"
+                          "persistence_location {}/\n",
+                          port, store.string()));
+    ASSERT_TRUE(broker->running()) << broker->log();
+    auto connect_client = [&] {
+        client = std::make_unique<MqttTestClient>(MqttTestClient::Options{.port = port});
+        ASSERT_TRUE(client->connected());
+        client->subscribe(std::string(prefix) + "/#");
+    };
+    connect_client();
+    client->publish(topic("command"), "next-preset", true);
+    client->publish(topic("set/rain.intensity"), "0.9", true);
+    ASSERT_TRUE(client->wait_for(topic("set/rain.intensity")));  // stored on the broker
+
+    start_puddle();
+    // A plain set after the retained messages: when its state comes back, they have been handled.
+    auto handled_after = [&](const std::string& vignette) {
+        client->publish(topic("set/look.vignette"), vignette);
+        ASSERT_TRUE(wait_state("look.vignette", vignette)) << puddle->log();
+    };
+    handled_after("0.5");
+    for (int restart = 0; restart < 2; ++restart) {
+        client.reset();
+        broker->stop();
+        ASSERT_TRUE(broker->start()) << broker->log();
+        connect_client();
+        ASSERT_TRUE(client->wait_for(
+            topic("availability"), [](auto& p) { return p == "online"; }, 60))
+            << puddle->log();
+        handled_after(restart == 0 ? "0.6" : "0.7");
+    }
+    EXPECT_EQ(client->latest()[topic("preset")], "none") << puddle->log();
+    EXPECT_EQ(client->latest()[topic("state/rain.intensity")], "0.3") << puddle->log();
+    EXPECT_EQ(puddle->count("remote: " + topic("command") + ": retained commands are ignored"), 1)
+        << puddle->log();
+    EXPECT_EQ(puddle->count("remote: " + topic("set/rain.intensity") + ": retained commands are ignored"), 1)
+        << puddle->log();
+    EXPECT_EQ(puddle->count("retained commands are ignored"), 2) << puddle->log();
+
+    // Clearing them (an empty retained message, passed on to subscribers) is neither applied nor an error.
+    const std::size_t errors = client->received(topic("error")).size();
+    client->publish(topic("command"), "", true);
+    client->publish(topic("set/rain.intensity"), "", true);
+    handled_after("0.8");
+    EXPECT_EQ(client->received(topic("error")).size(), errors) << puddle->log();
+    EXPECT_EQ(puddle->count("info: preset:"), 0) << puddle->log();
+    EXPECT_EQ(puddle->stop(), 0);
+    EXPECT_EQ(read_file(dir / "state.toml").find("0.9"), std::string::npos) << read_file(dir / "state.toml");
+}
+
 TEST_F(RemoteEndToEnd, NoBrokerIsOneWarningAndTheDisplayRuns) {
     const int port = free_port();
     dir.write("puddle.toml", remote_config(port));
@@ -307,6 +378,19 @@ TEST_F(RemoteEndToEnd, NoBrokerIsOneWarningAndTheDisplayRuns) {
     ASSERT_TRUE(p.wait_for("stats:", 3)) << p.log();  // four reports: frames go on
     EXPECT_EQ(p.count("cannot connect to the broker"), 1) << p.log();
     EXPECT_EQ(p.stop(), 0);
+}
+
+// Issue 33, item 5: the whole process, as `systemctl stop` sees it, with the broker's host dropping
+// packets (it took 129 s, and systemd killed it).
+TEST_F(RemoteEndToEnd, SigtermWhileTheBrokersHostDropsPacketsEndsAtOnce) {
+    BlackholePort hole;
+    dir.write("puddle.toml", remote_config(hole.port()));
+    Running p(puddle_args(dir), dir / "puddle.log");
+    ASSERT_TRUE(p.wait_for("started:")) << p.log();
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // inside the connect
+    const double t0 = monotonic_seconds();
+    EXPECT_EQ(p.stop(), 0) << p.log();
+    EXPECT_LT(monotonic_seconds() - t0, 1.5) << p.log();
 }
 
 TEST_F(RemoteEndToEnd, LastWillSaysOfflineWhenKilled) {

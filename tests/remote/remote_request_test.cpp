@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "remote/discovery.hpp"
@@ -91,6 +93,31 @@ TEST(RemoteRequest, CommandsPresetsAndHomeAssistant) {
     EXPECT_EQ(std::get<SelectPreset>(ok("puddle/a1/preset/set", "none")).name, "");
     EXPECT_TRUE(std::holds_alternative<HomeAssistantOnline>(ok("homeassistant/status", "online")));
     EXPECT_TRUE(std::holds_alternative<Ignored>(ok("homeassistant/status", "offline")));
+}
+
+// A command is an event: a retained one (replayed by the broker at every subscription) is never
+// applied, whatever it holds, on every command topic and under either prefix; an empty payload is a
+// retained message being cleared, not an error. homeassistant/status is a state and may be retained.
+TEST(RemoteRequest, RetainedCommandsAreNeverAppliedAndAnEmptyPayloadIsCleared) {
+    for (const char* topic :
+         {"puddle/a1/command", "puddle/all/command", "puddle/a1/preset/set", "puddle/all/preset/set",
+          "puddle/a1/set/rain.intensity", "puddle/all/set/rain.intensty"}) {
+        for (const char* payload : {"next-preset", "0.5", "downpour", "", "junk"}) {
+            auto r = parse_request(settings(), Inbound{topic, payload, std::string(payload).size(), true});
+            ASSERT_TRUE(r) << topic << " " << payload << ": " << r.error().message;
+            EXPECT_TRUE(std::holds_alternative<RetainedCommand>(*r)) << topic << " " << payload;
+        }
+        auto oversized = parse_request(settings(), Inbound{topic, "", max_payload_bytes + 1, true});
+        ASSERT_TRUE(oversized) << oversized.error().message;
+        EXPECT_TRUE(std::holds_alternative<RetainedCommand>(*oversized));
+        for (const char* empty : {"", " \n"})
+            EXPECT_TRUE(std::holds_alternative<Ignored>(ok(topic, empty))) << topic;
+    }
+    auto status = parse_request(settings(), Inbound{"homeassistant/status", "online", 6, true});
+    ASSERT_TRUE(status);
+    EXPECT_TRUE(std::holds_alternative<HomeAssistantOnline>(*status));
+    // Not retained, the same messages apply as before.
+    EXPECT_EQ(std::get<Command>(ok("puddle/a1/command", "next-preset")), Command::NextPreset);
 }
 
 // A wall's screens switch together at a time the message names (issue 20, "Changes in step").
@@ -189,6 +216,43 @@ TEST(Discovery, OneControlPerWritableParameterWithTheRegistrysRange) {
         EXPECT_EQ(cleared[i].topic, configs[i].topic);
         EXPECT_TRUE(cleared[i].payload.empty() && cleared[i].retain);
     }
+}
+
+// Issue 33, item 10: Home Assistant 2025.10 and later read default_entity_id ("<domain>.<slug>"), not
+// object_id, and made entity ids from the device's name and the raw key
+// (number.puddle_puddle_hatest_rain_drop_count); the names were raw keys (rain.drop_count, next-preset).
+TEST(Discovery, EveryEntityHasAReadableNameAndBothEntityIdKeys) {
+    RemoteSettings s = settings("rain.*, look.*, overlay.rain, scene.kind");
+    s.client_id = "puddle-Lobby.2";
+    s.screen_name = "Lobby.2";
+    EXPECT_EQ(device_name(s), "Puddle Lobby.2");
+    s.screen_name.clear();
+    EXPECT_EQ(device_name(s), "Puddle puddle-Lobby.2") << "no screen name: the client id";
+    s.screen_name = "lobby";
+    std::map<std::string, std::string> names;  // default_entity_id -> name
+    for (const Outbound& o : discovery_configs(s, {"downpour"}, "9.9", {.soc_temperature = true})) {
+        SCOPED_TRACE(o.topic);
+        const auto c = nlohmann::json::parse(o.payload);
+        const std::string component = o.topic.substr(14, o.topic.find('/', 14) - 14);
+        const std::string id = c["default_entity_id"], object = c["object_id"], name = c["name"];
+        EXPECT_EQ(id, component + "." + object);
+        EXPECT_TRUE(object.starts_with("puddle_lobby_2_")) << object;
+        EXPECT_EQ(object.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_"), std::string::npos);
+        EXPECT_EQ(object.find("__"), std::string::npos);
+        EXPECT_FALSE(name.empty());
+        EXPECT_TRUE(std::isupper(static_cast<unsigned char>(name[0]))) << name;
+        EXPECT_EQ(name.find_first_of("._"), std::string::npos) << "a raw key: " << name;
+        EXPECT_FALSE(name.starts_with("Puddle")) << "Home Assistant puts the device's name first";
+        EXPECT_EQ(c["device"]["name"], "Puddle lobby");
+        EXPECT_TRUE(names.emplace(id, name).second) << "two entities with one id";
+    }
+    EXPECT_EQ(names["number.puddle_lobby_2_rain_drop_count"], "Rain drop count");
+    EXPECT_EQ(names["button.puddle_lobby_2_next_preset"], "Next preset");
+    EXPECT_EQ(names["select.puddle_lobby_2_preset"], "Preset");
+    EXPECT_EQ(names["select.puddle_lobby_2_scene_kind"], "Scene kind");
+    EXPECT_EQ(names["sensor.puddle_lobby_2_soc_temperature_c"], "SoC temperature");
+    EXPECT_EQ(names["image.puddle_lobby_2_screenshot"], "Screenshot");
+    EXPECT_EQ(readable_name("overlay.rain"), "Overlay rain");
 }
 
 // The SoC temperature sensor is announced only where the screen has a thermal zone; clearing removes it

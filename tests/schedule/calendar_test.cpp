@@ -1,10 +1,13 @@
 // The schedule's time rules in local time: days and ranges, windows past midnight, instants, overlap,
-// daylight-saving days (both changes, in London and New York), sunrise and sunset with offsets.
+// daylight-saving days (both changes, in London, Berlin and New York, from the system's tz database), sunrise
+// and sunset with offsets.
 #include "schedule/calendar.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <ctime>
+#include <filesystem>
 
 #include "schedule/tz_guard.hpp"
 
@@ -132,7 +135,7 @@ TEST(ScheduleCalendar, TheSpringClockChangeInLondon) {
     Calendar cal({window("daily", "01:30", "03:00"), instant("daily", "07:00")});
     auto start = cal.next_transition(utc(2026, 3, 29, 0, 0));
     ASSERT_TRUE(start);
-    EXPECT_EQ(start->at, utc(2026, 3, 29, 1, 0)) << "a skipped time happens when the clocks jump";
+    EXPECT_EQ(start->at, utc(2026, 3, 29, 1, 30)) << "a skipped time is moved forward by the gap: 02:30 BST";
     EXPECT_EQ(start->entry, 0);
     EXPECT_EQ(cal.active_at(utc(2026, 3, 29, 1, 30)), (Active{0, 1})) << "02:30 BST";
     EXPECT_EQ(cal.active_at(utc(2026, 3, 29, 2, 0)), Active{1}) << "03:00 BST: ended";
@@ -172,6 +175,98 @@ TEST(ScheduleCalendar, NewYorkClockChangesAndMidnight) {
     auto fall_end = cal.next_transition(fall_begin->at);
     EXPECT_EQ(fall_end->at - fall_begin->at, 9 * 3600.0) << "one hour longer";
     EXPECT_EQ(cal.active_at(utc(2026, 11, 1, 6, 30)), Active{0}) << "01:30 EST, the second time";
+}
+
+// A zone's clock-change days in 2026 (all Sundays) and the local days before them.
+struct ClockChange {
+    const char* zone;
+    Date day;
+    double utc_jump;  // the instant the clocks move
+};
+const ClockChange clock_changes[] = {
+    {"Europe/Berlin", {2026, 3, 29}, utc(2026, 3, 29, 1, 0)},     // 02:00 CET becomes 03:00 CEST
+    {"Europe/Berlin", {2026, 10, 25}, utc(2026, 10, 25, 1, 0)},   // 03:00 CEST becomes 02:00 CET
+    {"America/New_York", {2026, 3, 8}, utc(2026, 3, 8, 7, 0)},    // 02:00 EST becomes 03:00 EDT
+    {"America/New_York", {2026, 11, 1}, utc(2026, 11, 1, 6, 0)},  // 02:00 EDT becomes 01:00 EST
+};
+
+bool zoneinfo_has(const char* zone) {
+    return std::filesystem::exists(std::filesystem::path("/usr/share/zoneinfo") / zone);
+}
+
+// The length of the window a Sunday-only rule opens on `day` (0 when none opens that day).
+double window_length_on(const Calendar& cal, long day) {
+    const double midnight = local_time(day, 0);
+    const auto start = cal.next_transition(midnight - 1);
+    if (!start || start->kind != Transition::Kind::starts || start->at >= local_time(day + 1, 0)) return 0;
+    const auto end = cal.next_transition(start->at);
+    return end ? end->at - start->at : 0;
+}
+
+// The field report: display off from 02:00 to 03:00, inside the hour the clocks skip. That day's window is
+// empty (both ends are 03:00), not 24 hours long (the old "to not after from ends the next day" on the
+// resolved instants made the screen black all Sunday).
+TEST(ScheduleCalendar, AWindowInsideTheSkippedHourIsEmptyThatDayNotADayLong) {
+    for (const ClockChange& c : clock_changes) {
+        if (!zoneinfo_has(c.zone)) GTEST_SKIP() << "no /usr/share/zoneinfo/" << c.zone << " (tzdata)";
+        if (c.day.month > 6) continue;  // the spring days
+        TzGuard tz(c.zone);
+        Calendar cal({window("daily", "02:00", "03:00")});
+        const long day = days_from_civil(c.day);
+        EXPECT_EQ(cal.active_at(c.utc_jump + 1), Active{}) << c.zone << ": 03:00 local, just after the jump";
+        EXPECT_EQ(cal.active_at(c.utc_jump + 6 * 3600), Active{}) << c.zone << ": that Sunday's morning";
+        EXPECT_EQ(cal.active_at(c.utc_jump + 12 * 3600), Active{}) << c.zone << ": that Sunday's afternoon";
+        EXPECT_EQ(cal.active_at(local_time(day - 1, 150)), Active{0}) << c.zone << ": 02:30 on Saturday";
+        EXPECT_EQ(cal.active_at(local_time(day + 1, 150)), Active{0}) << c.zone << ": 02:30 on Monday";
+        const auto next = cal.next_transition(c.utc_jump - 2 * 3600);
+        ASSERT_TRUE(next);
+        EXPECT_EQ(next->at, local_time(day + 1, 120)) << c.zone << ": the next start is Monday's 02:00";
+    }
+}
+
+// One rule for every clock time on a change day, read with the offset in force before the change: a
+// skipped one is moved forward by the gap, one that happens twice happens the first time.
+TEST(ScheduleCalendar, SkippedTimesMoveForwardByTheGapAndRepeatedOnesHappenTheFirstTime) {
+    if (!zoneinfo_has("Europe/Berlin") || !zoneinfo_has("America/New_York")) GTEST_SKIP() << "no tzdata";
+    {
+        TzGuard tz("Europe/Berlin");
+        EXPECT_EQ(local_time(days_from_civil({2026, 3, 29}), 150), utc(2026, 3, 29, 1, 30)) << "03:30 CEST";
+        EXPECT_EQ(local_time(days_from_civil({2026, 3, 29}), 120), utc(2026, 3, 29, 1, 0)) << "03:00 CEST";
+        EXPECT_EQ(local_time(days_from_civil({2026, 10, 25}), 150), utc(2026, 10, 25, 0, 30)) << "02:30 CEST";
+        Calendar cal({instant("sun", "02:30"), instant("sun", "12:00")});
+        const auto fires = cal.next_transition(utc(2026, 3, 29, 0, 0));
+        ASSERT_TRUE(fires);
+        EXPECT_EQ(fires->at, utc(2026, 3, 29, 1, 30)) << "an instant at 02:30 fires at 03:30 CEST";
+    }
+    {
+        TzGuard tz("America/New_York");
+        EXPECT_EQ(local_time(days_from_civil({2026, 3, 8}), 135), utc(2026, 3, 8, 7, 15)) << "03:15 EDT";
+        EXPECT_EQ(local_time(days_from_civil({2026, 11, 1}), 90), utc(2026, 11, 1, 5, 30)) << "01:30 EDT";
+    }
+}
+
+// Every window with ends on the half hours around the changes (and midday, late evening, 24:00), on each
+// change day in Berlin and New York: its length differs from the same window's a week earlier by at most
+// the hour the clocks moved.
+TEST(ScheduleCalendar, AWindowsLengthChangesByAtMostTheClockChange) {
+    std::vector<int> ends{12 * 60, 23 * 60, 24 * 60};
+    for (int m = 0; m <= 5 * 60; m += 30) ends.push_back(m);
+    for (const ClockChange& c : clock_changes) {
+        if (!zoneinfo_has(c.zone)) GTEST_SKIP() << "no /usr/share/zoneinfo/" << c.zone << " (tzdata)";
+        TzGuard tz(c.zone);
+        const long day = days_from_civil(c.day);
+        for (const int from : ends)
+            for (const int to : ends) {
+                const Calendar cal({Rule{.days = days("sun"),
+                                         .from = TimeOfDay{TimeOfDay::Anchor::clock, from},
+                                         .to = TimeOfDay{TimeOfDay::Anchor::clock, to}}});
+                const double usual = window_length_on(cal, day - 7), changed = window_length_on(cal, day);
+                EXPECT_LE(std::abs(changed - usual), 3600.0)
+                    << c.zone << " " << c.day.year << "-" << c.day.month << "-" << c.day.day << " from "
+                    << to_string(*cal.rules()[0].from) << " to " << to_string(*cal.rules()[0].to) << ": "
+                    << changed / 3600 << " h, usually " << usual / 3600 << " h";
+            }
+    }
 }
 
 TEST(ScheduleCalendar, SunsetWithAnOffsetFollowsTheSeasons) {

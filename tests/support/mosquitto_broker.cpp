@@ -97,10 +97,15 @@ bool MosquittoBroker::start() {
 
 void MosquittoBroker::stop() {
     if (pid_ <= 0) return;
+    kill(pid_, SIGCONT);  // a stopped broker would hold SIGTERM
     kill(pid_, SIGTERM);
     int status = 0;
     waitpid(pid_, &status, 0);
     pid_ = -1;
+}
+
+void MosquittoBroker::signal(int sig) const {
+    if (pid_ > 0) kill(pid_, sig);
 }
 
 std::string MosquittoBroker::log() const {

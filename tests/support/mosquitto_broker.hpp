@@ -38,6 +38,8 @@ public:
     bool start();
     // SIGTERM, and waits for it to exit.
     void stop();
+    // SIGSTOP: a broker that keeps its connections open and stops answering; SIGCONT: it goes on.
+    void signal(int sig) const;
     int port() const { return port_; }
     bool running() const { return pid_ > 0; }
     std::string log() const;

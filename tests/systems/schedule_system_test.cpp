@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <ctime>
+#include <thread>
 
 #include "params/param_docs.hpp"
 #include "schedule/solar.hpp"
@@ -234,6 +237,38 @@ TEST(ScheduleSystem, AReloadReevaluatesWithoutForgettingKnobs) {
     EXPECT_FLOAT_EQ(rig.params.get<ParamId::display_brightness>(), 0.5f);
     EXPECT_TRUE(rig.tuning.layers.knob(ParamId::display_power));  // a reload is no transition
     EXPECT_DOUBLE_EQ(rig.run.next_evaluation, local(2026, 6, 5, 13, 0));
+}
+
+// `timedatectl set-timezone` while running (here TZ, the injectable source): at a reload the schedule is
+// evaluated again in the new zone at once, and without one within a minute (the look then runs on a worker
+// thread). The old code kept the zone it started with until a restart.
+TEST(ScheduleSystem, ATimeZoneChangeIsEvaluatedAgainAtAReloadAndWithinAMinute) {
+    test::TzGuard tz("Europe/Berlin");
+    Rig rig(night_off);
+    ZoneCheck zone("/nonexistent/localtime");
+    double now = local(2026, 6, 5, 22, 0);
+    WallClock clock;
+    clock.now_ns = [&] { return static_cast<std::int64_t>(now) * ns_per_second; };
+    const auto frame = [&] { schedule_system(clock, zone, rig.run, rig.tuning, rig.params); };
+    frame();
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, local(2026, 6, 5, 23, 0));
+    const double berlin_23 = rig.run.next_evaluation;
+    ::setenv("TZ", "America/New_York", 1);  // no tzset(): the schedule must look again itself
+    now += 1;
+    frame();
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, berlin_23) << "not looked at again before a minute";
+    now += zone_check_seconds;
+    for (int i = 0; i < 500 && rig.run.next_evaluation == berlin_23; ++i) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, berlin_23 + 6 * 3600) << "23:00 in New York";
+    EXPECT_TRUE(rig.power()) << "22:00 in Berlin is 16:00 in New York";
+    // Back to Berlin with a reload (SIGHUP): at once, on that frame.
+    ::setenv("TZ", "Europe/Berlin", 1);
+    ++rig.tuning.config_generation;
+    frame();
+    EXPECT_DOUBLE_EQ(rig.run.next_evaluation, berlin_23);
 }
 
 TEST(ScheduleSystem, TheWallClockGoingBackIsEvaluatedAgain) {
