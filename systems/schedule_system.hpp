@@ -32,7 +32,7 @@ struct ScheduleRun {
     double last_evaluated = 0;
     double next_evaluation = 0;  // the next transition, or a day later when none is in sight
     bool time_zone_checked =
-        false;  // a TZ the C library cannot resolve is logged once, with the first calendar
+        false;                  // a TZ the C library cannot resolve is logged once, with the first calendar
     bool zone_changed = false;  // set by zone_check_step: evaluated again, as at a reload
 };
 

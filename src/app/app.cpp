@@ -175,7 +175,7 @@ int run(int argc, const char* const* argv) {
 
     auto options = parse_command_line(argc, argv);
     if (!options) {
-        if (options.error().code == ExitCode::Ok) return 0;  // --help, --version
+        if (options.error().code == ExitCode::Ok) return 0;                         // --help, --version
         std::fprintf(stderr, "%s\n", valid_utf8(options.error().message).c_str());  // as log lines are
         return static_cast<int>(options.error().code);
     }

@@ -310,10 +310,12 @@ TEST(Check, PrintsTheActiveScheduleEntriesAndTheNextTransition) {
     const CommandResult o =
         check_here({"--gpio", "mock:", "--config", cfg}, {.dri_folder = dri, .video_folder = dev});
     const auto schedule = sections(o.output)["[schedule]"];
-    ASSERT_EQ(schedule.size(), 2u) << o.output;
-    EXPECT_TRUE(schedule[0].starts_with("  OK    2 entries; now (")) << schedule[0];
-    EXPECT_TRUE(has(schedule[0], "): schedule[1] (daily from 00:00 to 24:00)")) << schedule[0];
-    EXPECT_TRUE(schedule[1].starts_with("        next transition: schedule[")) << schedule[1];
+    ASSERT_EQ(schedule.size(), 3u) << o.output;
+    // The zone the entries' times are read in comes first (a zone changed while running is re-read).
+    EXPECT_TRUE(schedule[0].starts_with("  OK    time zone: ")) << schedule[0];
+    EXPECT_TRUE(schedule[1].starts_with("  OK    2 entries; now (")) << schedule[1];
+    EXPECT_TRUE(has(schedule[1], "): schedule[1] (daily from 00:00 to 24:00)")) << schedule[1];
+    EXPECT_TRUE(schedule[2].starts_with("        next transition: schedule[")) << schedule[2];
 
     const std::string none = dir.write("none.toml", "[rain]\ndrop_count = 40\n");
     const CommandResult n =
