@@ -16,7 +16,7 @@ struct CliOptions {
     std::vector<std::string> sets;  // --set name=value, applied last
     std::string preset;             // --preset NAME (or --set preset=NAME): instead of the config's preset =
     bool list_params = false;
-    bool markdown = false;  // --list-params as the README's Markdown table
+    bool markdown = false;  // --list-params as docs/parameters.md's Markdown table
     bool print_config = false;
     bool check = false;  // --check: report on this machine and exit
     platform::DisplayOptions display;
@@ -39,5 +39,10 @@ struct CliOptions {
 // Returns the options, or an Error with exit code 2 for bad flags. `--help` and `--version` print and
 // return an Error with exit code 0 (the caller exits with it).
 Result<CliOptions> parse_command_line(int argc, const char* const* argv);
+
+// The puddle(1) man page as roff (man(7) macros), made from the same option definitions as --help, with
+// the examples, exit codes and files. The package installs deploy/puddle.1; a unit test keeps that file
+// equal to this text (Debian policy 12.1: every program in /usr/bin has a manual page).
+std::string format_man_page();
 
 }  // namespace puddle::app
