@@ -14,10 +14,34 @@ using params::ParamId;
 namespace {
 
 // Starts the field flat `warmup` steps before `target`: the next frames simulate up to it.
-void restart(FrameClock& clock, WallSteps& steps, std::int64_t target, std::int64_t warmup) {
+void restart(FrameClock& clock, WallSteps& steps, std::int64_t target, std::int64_t warmup,
+             std::int64_t now_ns) {
     clock.step_index = static_cast<std::uint64_t>(target - warmup);
     ++clock.field_generation;
     ++steps.resyncs;
+    steps.restart_ns = now_ns;
+    steps.restart_step = clock.step_index;
+    steps.reached_clock = warmup == 0;
+}
+
+// The screen fell further behind than the warm-up before its last warm-up ever reached the clock: say
+// so (once a run) with the pace it reached, and follow the clock's time from now on.
+void fall_behind_the_wall(WallSteps& steps, const FrameClock& clock, const params::Params& params,
+                          std::int64_t now_ns, double rate) {
+    const double seconds = static_cast<double>(now_ns - steps.restart_ns) * 1e-9;
+    const double pace =
+        seconds > 0 ? static_cast<double>(clock.step_index - steps.restart_step) / seconds : 0.0;
+    steps.behind_the_wall = true;
+    steps.behind_resolution = params.get<ParamId::wave_resolution>();
+    steps.behind_rate = rate;
+    const auto level = steps.behind_said ? spdlog::level::debug : spdlog::level::warn;
+    steps.behind_said = true;
+    spdlog::log(level,
+                "wall: this screen cannot keep the wall's pace: it simulated {:.0f} wave steps a second, the "
+                "wall runs {:.0f} (wave.steps_per_second); its ripples will not match the other screens'. "
+                "It now follows the wall's time at {} steps a frame at most. Lower wave.resolution (now {}) "
+                "on every screen of the wall",
+                pace, rate, behind_steps_per_frame, steps.behind_resolution);
 }
 
 // Why a re-sync is due, or null: the caller logs it with the clock's gap.
@@ -66,18 +90,44 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
         field_needed ? std::llround(static_cast<double>(params.get<ParamId::wall_warmup>()) * rate) : 0;
     const std::int64_t max_hold = std::llround(max_hold_seconds * rate);
     std::int64_t behind = target - static_cast<std::int64_t>(clock.step_index);
-    if (const char* why = resync_reason(steps, field_needed, behind, warmup, max_hold)) {
-        if (steps.joined)
-            spdlog::info("wall: {} ({:+.3f} s): re-syncing, {} steps of warm-up", why,
-                         static_cast<double>(behind) * step_seconds, warmup);
-        else
-            spdlog::info("wall: {} at step {} ({} steps/s), {} steps of warm-up", why, target, rate, warmup);
-        restart(clock, steps, target, warmup);
-        behind = warmup;
+    if (steps.behind_the_wall &&
+        (params.get<ParamId::wave_resolution>() != steps.behind_resolution || rate != steps.behind_rate)) {
+        steps.behind_the_wall = false;  // a cheaper field may keep the pace: try the wall's steps again
+        spdlog::info("wall: the wave field's cost changed: trying the wall's pace again");
+        steps.joined = false;
+    }
+    // Behind the wall: skip ahead to the clock's step (never past a pending change's or the screenshot's),
+    // leaving a few steps for this frame.
+    const auto follow_the_clocks_time = [&] {
+        std::int64_t to = target;
+        if (steps.stop_step != 0) to = std::min(to, steps.stop_step);
+        if (steps.change_step != 0) to = std::min(to, static_cast<std::int64_t>(steps.change_step) - 1);
+        const auto from = static_cast<std::int64_t>(clock.step_index);
+        clock.step_index = static_cast<std::uint64_t>(std::max(from, to - behind_steps_per_frame));
+        behind = std::clamp<std::int64_t>(target - static_cast<std::int64_t>(clock.step_index), 0,
+                                          behind_steps_per_frame);
+    };
+    if (steps.behind_the_wall && field_needed && steps.field_in_use && behind > -max_hold) {
+        follow_the_clocks_time();
+    } else if (const char* why = resync_reason(steps, field_needed, behind, warmup, max_hold)) {
+        if (steps.joined && field_needed && steps.field_in_use && behind > warmup && !steps.reached_clock) {
+            fall_behind_the_wall(steps, clock, params, wall.now_ns(), rate);
+            follow_the_clocks_time();
+        } else {
+            if (steps.joined)
+                spdlog::info("wall: {} ({:+.3f} s): re-syncing, {} steps of warm-up", why,
+                             static_cast<double>(behind) * step_seconds, warmup);
+            else
+                spdlog::info("wall: {} at step {} ({} steps/s), {} steps of warm-up", why, target, rate,
+                             warmup);
+            restart(clock, steps, target, warmup, wall.now_ns());
+            behind = warmup;
+        }
     }
     steps.joined = true;
     steps.field_in_use = field_needed;
     std::int64_t due = std::clamp<std::int64_t>(behind, 0, params.get<ParamId::wall_catch_up_steps>());
+    if (due >= behind) steps.reached_clock = true;
     if (steps.change_step != 0)  // the change's step waits for the change (systems/synced_changes.hpp)
         due = std::clamp<std::int64_t>(
             static_cast<std::int64_t>(steps.change_step) - 1 - static_cast<std::int64_t>(clock.step_index), 0,

@@ -16,6 +16,14 @@
 // up to a quarter second the screen holds its step until the clock is there again (it already simulated
 // those steps); further back, a re-sync. While the output is off nothing is simulated, and waking counts
 // as a forward step by the time it was off.
+//
+// A screen too slow for the wall's pace (its GPU simulates fewer than wave.steps_per_second steps a
+// second) would warm up, fall further behind than the warm-up and re-sync, for ever. It is found by a
+// re-sync for being behind that comes before the warm-up it restarts ever reached the clock's step: the
+// screen then says once what pace it reached and what to lower, and falls back to the clock's time
+// instead of its steps: each frame it skips to the clock's step and simulates at most
+// behind_steps_per_frame of them, so frames keep coming and the ripples run on, no longer matching the
+// other screens. A change of wave.resolution or wave.steps_per_second tries the wall's pace again.
 
 #include <cstdint>
 #include <optional>
@@ -33,6 +41,9 @@ namespace puddle::systems {
 // A backward clock step this long or shorter is waited out rather than re-synced.
 inline constexpr double max_hold_seconds = 0.25;
 
+// Steps a frame at most on a screen that cannot keep the wall's pace.
+inline constexpr int behind_steps_per_frame = 2;
+
 // Resource.
 struct WallSteps {
     bool joined = false;           // step_index follows the wall clock; false: the next frame joins
@@ -46,6 +57,18 @@ struct WallSteps {
     // the same step and writes it).
     std::int64_t stop_step = 0;
     bool sync_checked = false;  // the kernel's clock discipline was looked at (warned once if unsynchronised)
+
+    // Since the last (re)start of the field: when, from which step, and whether a frame reached the
+    // clock's step since (a warm-up that never does means the screen cannot keep the wall's pace).
+    std::int64_t restart_ns = 0;
+    std::uint64_t restart_step = 0;
+    bool reached_clock = false;
+    // The screen cannot keep the wall's pace at these settings (wave.resolution, steps per second): it
+    // follows the clock's time, not its steps (see the header's comment).
+    bool behind_the_wall = false;
+    int behind_resolution = 0;
+    double behind_rate = 0.0;
+    bool behind_said = false;  // the warning is logged once a run; later times at debug level
 };
 
 // Input stage, with wall.clock = "realtime": sets the frame clock's steps_due (and, on a join or re-sync,

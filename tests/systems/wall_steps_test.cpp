@@ -3,10 +3,13 @@
 // way are re-synced or caught up within a bounded number of frames, never by thousands of steps in one.
 #include "systems/wall_steps.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "support/log_lines.hpp"
 
 namespace puddle::systems {
 namespace {
@@ -204,6 +207,65 @@ TEST(WallSteps, AChangesStepWaitsForTheChange) {
     s.now += frame_ns;
     s.frame();
     EXPECT_TRUE(s.in_step());
+}
+
+// A screen whose GPU is too slow for the wall's pace (a 1024 field on llvmpipe): each frame costs 10 ms
+// plus step_ms a step it simulates. Returns the frames run until `until_ns`.
+int run_costly(Screen& s, double step_ms, std::int64_t until_ns) {
+    int frames = 0;
+    while (s.now < until_ns) {
+        const int steps = s.frame();
+        s.now += 10'000'000 + std::llround(step_ms * 1e6 * steps);
+        ++frames;
+    }
+    return frames;
+}
+
+TEST(WallSteps, AScreenTooSlowForTheWallSaysSoOnceAndStopsReSyncing) {
+    const test::LogLines warnings(spdlog::level::warn);
+    Screen s;
+    // 25 ms a step: 40 steps a second at most, where the wall runs 60.
+    run_costly(s, 25.0, start_ns + 10 * ns_per_second);
+    EXPECT_TRUE(s.steps.behind_the_wall);
+    EXPECT_EQ(warnings.count("this screen cannot keep the wall's pace"), 1);
+    EXPECT_EQ(warnings.count(
+                  fmt::format("Lower wave.resolution (now {})", s.params.get<ParamId::wave_resolution>())),
+              1);
+    // From then on: no re-sync, frames every 60 ms (2 steps each), each frame at the clock's step.
+    const std::uint64_t resyncs = s.steps.resyncs;
+    s.most_in_a_frame = 0;
+    const int frames = run_costly(s, 25.0, s.now + 35 * ns_per_second);
+    EXPECT_EQ(s.steps.resyncs, resyncs);
+    EXPECT_LE(resyncs, 2u);  // joining (and at most one warm-up that found the screen too slow)
+    EXPECT_EQ(warnings.count("this screen cannot keep the wall's pace"), 1);
+    EXPECT_EQ(s.most_in_a_frame, behind_steps_per_frame);
+    EXPECT_GE(frames, 35 * 1000 / 60 - 1);
+    EXPECT_EQ(static_cast<std::int64_t>(s.clock.step_index), s.steps.target_step);
+}
+
+// A cheaper field (or fewer steps a second) tries the wall's pace again, and a screen that keeps it joins.
+TEST(WallSteps, ACheaperFieldTriesTheWallsPaceAgain) {
+    const test::LogLines lines(spdlog::level::info);
+    Screen s;
+    run_costly(s, 25.0, start_ns + 10 * ns_per_second);
+    ASSERT_TRUE(s.steps.behind_the_wall);
+    s.params.set<ParamId::wave_resolution>(128, ParamSource::CommandLine);
+    const std::uint64_t generation = s.clock.field_generation;
+    run_costly(s, 1.0, s.now + 30 * ns_per_second);  // 1 ms a step: 60 steps a frame gain on the clock
+    EXPECT_FALSE(s.steps.behind_the_wall);
+    EXPECT_EQ(lines.count("trying the wall's pace again"), 1);
+    EXPECT_EQ(s.clock.field_generation, generation + 1);  // joined afresh, by a warm-up
+    EXPECT_EQ(static_cast<std::int64_t>(s.clock.step_index), s.steps.target_step);
+}
+
+// A screen that keeps the pace while warming up never falls behind the wall.
+TEST(WallSteps, AScreenThatKeepsThePaceNeverFallsBehind) {
+    const test::LogLines warnings(spdlog::level::warn);
+    Screen s;
+    run_costly(s, 1.0, start_ns + 60 * ns_per_second);
+    EXPECT_FALSE(s.steps.behind_the_wall);
+    EXPECT_EQ(s.steps.resyncs, 1u);
+    EXPECT_EQ(warnings.count("cannot keep the wall's pace"), 0);
 }
 
 // A wall that can never match is said once at start-up and by --check, whatever the clocks.
