@@ -129,7 +129,10 @@ bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
 #else
     bool inside = d.y < 0.0 && all(lessThanEqual(abs(p.xz), 0.5 * u_puddle_size.xz));
 #endif
-    s = surface_at(p.xz);
+    // A ray that misses reads the surface at a harmless place: at p (where the plane's 1e-4 slope puts
+    // it, 1e4 times further than the sky) its neighbours' texture footprint is unbounded, and llvmpipe's
+    // anisotropic filter then takes minutes a frame.
+    s = surface_at(inside ? p.xz : vec2(0.0));
     vec2 slope = -s.gb * u_slope_scale * u_height_units;  // d(height)/dx, d(height)/dz in world units
     float closing = min(down - dot(slope, d.xz), 0.5 * down);  // how fast the ray meets the tilted plane
     p += (s.r * u_height_units / closing) * d;

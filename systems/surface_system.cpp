@@ -41,12 +41,14 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
             {.label = "field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
         surface.sampler = device.create_sampler(
             {.label = "surface", .min = gpu::Filter::Linear, .mag = gpu::Filter::Linear});
+        // Trilinear, not anisotropic: toward the horizon the repeated field's footprint spans many tiles,
+        // and llvmpipe's anisotropic filter (Mesa 22.3) then takes minutes a frame; the mip chain alone
+        // keeps distant rings from sparkling.
         surface.tiled_sampler = device.create_sampler({.label = "tiled surface",
                                                        .min = gpu::Filter::Linear,
                                                        .mag = gpu::Filter::Linear,
                                                        .mipmaps = true,
-                                                       .wrap = gpu::Wrap::Repeat,
-                                                       .anisotropy = 4.0f});
+                                                       .wrap = gpu::Wrap::Repeat});
         surface.marched_sampler = device.create_sampler({.label = "marched surface",
                                                          .min = gpu::Filter::Linear,
                                                          .mag = gpu::Filter::Linear,
