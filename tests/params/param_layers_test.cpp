@@ -86,8 +86,8 @@ TEST(ParamLayers, ACommandLinePresetReplacesTheConfigsAndAKnobStillWins) {
     ParamLayers l = layers();
     ASSERT_TRUE(l.set_command_line_preset("downpour"));
     EXPECT_EQ(l.preset_name(), "downpour") << "without a config";
-    EXPECT_EQ(l.compose().get<ParamId::rain_drop_count>(), 100);
-    EXPECT_EQ(l.compose().source(ParamId::rain_drop_count), ParamSource::Preset);
+    EXPECT_FLOAT_EQ(l.compose().get<ParamId::rain_rate>(), 14.0f);
+    EXPECT_EQ(l.compose().source(ParamId::rain_rate), ParamSource::Preset);
     ASSERT_TRUE(l.set_config(config("preset = \"mirror\"\n")));
     EXPECT_EQ(l.preset_name(), "downpour") << "over the config's";
     ASSERT_TRUE(l.set_config(config("[rain]\nintensity = 0.6\n")));  // a reload

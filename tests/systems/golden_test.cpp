@@ -24,7 +24,7 @@ constexpr glm::ivec2 golden_size{480, 270};
 
 TEST(Golden, DefaultNightPuddle) {
     // The program's own defaults throughout (the README shows this picture).
-    check_golden("default", render_with({"wave.resolution=512", "wave.size=1.6"}, 90, golden_size));
+    check_golden("default", render_with({}, 90, golden_size));
 }
 
 TEST(Golden, MurkyPondOnCobblesRaymarched) {

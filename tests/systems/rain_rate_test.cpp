@@ -71,7 +71,7 @@ TEST(CapillaryStep, SubstepsKeepTheLeapfrogStableAtAnyResolution) {
             EXPECT_TRUE((8.0 * s.a + 64.0 * s.b) * k * k >= 1.96 - 1e-4 || 8.0 * s.v * k >= 0.7 - 1e-4)
                 << res;
         }
-        EXPECT_NEAR(s.texel_m, 1.6 / res, 1e-9);
+        EXPECT_NEAR(s.texel_m, static_cast<double>(params.get<params::ParamId::wave_size>()) / res, 1e-9);
     }
 }
 
