@@ -12,7 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-build=build-aarch64
+build="build-aarch64"
 sysroot=${PUDDLE_SYSROOT:-$PWD/build-aarch64-sysroot}
 run_tests=0
 case "${1:-}" in
@@ -194,6 +194,7 @@ make_root() {
     unpack_packages "$root" "" <<<"$wanted" || return 1
     # What base-files', base-passwd's and libc-bin's scripts do on a new system: /tmp, the base users,
     # the library cache.
+    # shellcheck disable=SC2174  # $root exists (made above): only tmp is created, and -m is meant for it
     mkdir -p -m 1777 "$root/tmp"
     cp "$root/usr/share/base-passwd/passwd.master" "$root/etc/passwd"
     cp "$root/usr/share/base-passwd/group.master" "$root/etc/group"
@@ -202,6 +203,7 @@ make_root() {
 }
 install_deb() {
     cp "$deb" "$root/tmp/puddle.deb"
+    # shellcheck disable=SC2016  # ${Status} is dpkg-query's format field, not a shell expansion
     on_root dpkg -i /tmp/puddle.deb &&
         [ "$(on_root dpkg-query -W -f '${Status}' puddle)" = "install ok installed" ] &&
         [ -x "$root/usr/bin/puddle" ] && [ -f "$root/etc/puddle/puddle.toml" ] &&

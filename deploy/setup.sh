@@ -19,6 +19,7 @@ packages=(
     dpkg-dev systemd                                      # the .deb (cpack, dpkg-shlibdeps); unit checks
     clang libclang-rt-14-dev                              # tests/fuzz/run: libFuzzer and the sanitizers
     clang-format                                          # tests/format/run: the checked-in .clang-format
+    shellcheck                                            # tests/format/shellcheck (ctest shellcheck): the shell scripts
 )
 # The VM test (tests/vm/run) boots an amd64 Debian kernel under QEMU and runs the host's binary in it.
 if [ "$(dpkg --print-architecture)" = amd64 ]; then

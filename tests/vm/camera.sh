@@ -6,7 +6,7 @@
 #    open descriptor then fails with ENODEV; `rmmod` itself is refused while the device is open) brings
 #    back the cubemap; puddle keeps running and ends cleanly on SIGTERM. The device is bound again
 #    afterwards for the unload check that follows.
-# shellcheck shell=bash
+# shellcheck shell=bash disable=SC2154  # out: tests/vm/guest.sh
 camera_puddle_test() {
     local log pid rc i
     # shellcheck disable=SC2206  # VM_PUDDLE_SETS: the run's --set list (tests/vm/run), split on purpose
@@ -45,6 +45,7 @@ camera_puddle_test() {
         kill -TERM "$pid" 2>/dev/null; wait "$pid"
     else
         echo vivid.0 >/sys/bus/platform/drivers/vivid/unbind
+        # shellcheck disable=SC2034  # i only counts the polls
         for i in $(seq 1 60); do grep -q "back to the cubemap" "$log" && break; sleep 0.5; done
         sleep 2
         if ! kill -0 "$pid" 2>/dev/null; then

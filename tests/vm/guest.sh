@@ -81,6 +81,7 @@ kms_test() {
     screendump console-before || { say "FAIL kms: no screendump of the console"; return; }
     local fifo=$TMPDIR/puddle-kms.log line pid rc shots=0 shown=0
     mkfifo "$fifo"
+    # shellcheck disable=SC2086  # VM_PUDDLE_SETS: the run's --set list (tests/vm/run), split on purpose
     "$VM_PUDDLE" --backend kms --size "${VM_W}x${VM_H}" --frames "$VM_FRAMES" --fixed-step --fps-cap "$VM_FPS" \
         --seed "$VM_SEED" $VM_PUDDLE_SETS --log-level debug --screenshot "$out/kms-self.png" >"$fifo" 2>&1 &
     pid=$!
@@ -301,7 +302,7 @@ cec_test() {
     kill "$monitor" 2>/dev/null
     wait "$monitor" 2>/dev/null
     local seen
-    seen=$(grep -i -o -E 'STANDBY|IMAGE_VIEW_ON|ACTIVE_SOURCE' "$out/cec-monitor.log" | tr 'a-z' 'A-Z' | sort -u | tr '\n' ' ')
+    seen=$(grep -i -o -E 'STANDBY|IMAGE_VIEW_ON|ACTIVE_SOURCE' "$out/cec-monitor.log" | tr '[:lower:]' '[:upper:]' | sort -u | tr '\n' ' ')
     if [ "$rc" -ne 0 ]; then
         say "FAIL cec: puddle exited with $rc (log: cec.log)"
     elif [ "$step" -ne 3 ]; then

@@ -348,6 +348,7 @@ svc_state() {
     fi
     # The state folder is the user's data: Mesa's shader cache belongs in the unit's CacheDirectory.
     if [ -e /var/lib/puddle/.cache ]; then
+        # shellcheck disable=SC2012  # only a few names, for the message
         say "FAIL service-state: /var/lib/puddle/.cache exists: Mesa keeps its shader cache in the state folder ($(ls /var/lib/puddle/.cache | head -n 3 | tr '\n' ' '))"
         return 1
     fi
