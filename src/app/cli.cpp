@@ -49,7 +49,8 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
                    "Set a parameter, e.g. --set rain.drop_count=20 (repeatable; wins over the config)");
     cli.add_flag("--list-params", o.list_params,
                  "Print every parameter with its type, default, range and meaning");
-    cli.add_flag("--markdown", o.markdown, "With --list-params: print the Markdown table the README carries");
+    cli.add_flag("--markdown", o.markdown,
+                 "With --list-params: print the Markdown table docs/parameters.md carries");
     cli.add_flag("--check", o.check,
                  "Check this machine (config, screens, GPU, GPIO, cameras; the schedule's active entries and "
                  "next transition): OK or what to fix, then exit");

@@ -15,7 +15,7 @@ struct CliOptions {
     std::string config_path;        // empty: /etc/puddle/puddle.toml when it exists, else built-in defaults
     std::vector<std::string> sets;  // --set name=value, applied last
     bool list_params = false;
-    bool markdown = false;  // --list-params as the README's Markdown table
+    bool markdown = false;  // --list-params as docs/parameters.md's Markdown table
     bool print_config = false;
     bool check = false;  // --check: report on this machine and exit
     platform::DisplayOptions display;
