@@ -3,7 +3,7 @@
 // chosen mapping, mixed with the static cubemap by environment.camera_blend. Directions are in cube space;
 // the puddle pass rotates by environment.rotation when it samples, as it does for the cubemap.
 //
-// Mappings (README, "Camera reflections"): the image centre looks along u_axis (toward -X, 35 degrees
+// Mappings (docs/camera.md, "Mapping"): the image centre looks along u_axis (toward -X, 35 degrees
 // above the horizon: where the default view's reflection looks); image right is u_right, up u_up.
 //   MAPPING_MIRROR_BALL: the image's inscribed circle is a mirrored ball seen along -u_axis (a light
 //     probe): every direction has a texel, the one straight behind at the rim.

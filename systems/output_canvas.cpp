@@ -32,7 +32,7 @@ struct CanvasLayout {
 
 CanvasLayout canvas_layout(const params::Params& params, glm::ivec2 display_size, float scale) {
     CanvasLayout l;
-    // wall.rotation turns a screen of a video wall the same way (the README's portrait walls).
+    // wall.rotation turns a screen of a video wall the same way (docs/video-walls.md, portrait screens).
     const int quarter_turns = static_cast<int>(params.get<params::ParamId::display_rotation>()) +
                               params.get<params::ParamId::wall_rotation>();
     l.degrees = 90 * (quarter_turns % 4);

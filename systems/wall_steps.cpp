@@ -64,7 +64,7 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
         steps.sync_checked = true;
         if (const ClockSync sync = wall.sync(); !sync.synchronised)
             spdlog::warn(
-                "wall: the system clock is {}: screens of a wall will drift apart (README \"Video walls\")",
+                "wall: the system clock is {}: screens of a wall will drift apart (docs/video-walls.md)",
                 describe(sync));
     }
     const double rate = params.get<ParamId::wave_steps_per_second>();
@@ -145,7 +145,7 @@ std::optional<std::string> wall_timing_problem(const params::Params& params) {
             "a wall of {} screens with wall.clock = \"frame\": each screen counts time from its own start, "
             "so "
             "the ripples will not run on from one screen to the next; set [wall] clock = \"realtime\" on "
-            "every screen (README \"One clock for every screen\")",
+            "every screen (docs/video-walls.md, \"One clock for every screen\")",
             screens);
     if (realtime && params.get<ParamId::wave_damping>() >= 1.0f)
         return std::string(

@@ -30,7 +30,7 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
     const bool fixed_point = !(params.get<ParamId::wave_float_field>() && device.caps().float_render_targets);
     const gpu::TextureFormat format = fixed_point ? gpu::TextureFormat::RG32I : gpu::TextureFormat::RG32F;
     // A new resolution needs new textures only: compiling the step again on every rebuild grew the process
-    // by about 65 KiB each time on llvmpipe (puddle-soak, README "Soak"), so the pipelines, the sampler and
+    // by about 65 KiB each time on llvmpipe (puddle-soak, docs/testing.md), so the pipelines, the sampler and
     // the drop buffer stay with `field`. The textures are replaced only once everything that can fail has
     // worked, so a failed rebuild leaves the field whole.
     WaveField f;

@@ -1,4 +1,4 @@
-# ctest layer_includes: each layer's files include only what its row of ../shared/DESIGN.md's table may use.
+# ctest layer_includes: each layer's files include only what its row of docs/architecture.md's table may use.
 #
 # The table is written once, in CMakeLists.txt's puddle_layer(NAME SOURCES... USES...) calls; tests/CMakeLists.txt
 # passes it here as LAYERS, "name|folder|use,...|source,...|headers" entries joined by "!". A library's sources

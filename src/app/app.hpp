@@ -18,8 +18,9 @@ int run(int argc, const char* const* argv);
 // The layers of live tuning the options ask for: defaults < preset < config < knob and remote state <
 // --seed/--set, with the config file's path to watch and the knobs' GPIO backend. Errors in the config
 // or a flag are exit code 2; bad keys in the state file are dropped and warned about, one line each, and the
-// original is set aside (README "Saved state"). `read_only` (--print-config) reads and warns but changes
-// nothing on disk. The soak test builds its engine with this too, so it runs what the binary runs.
+// original is set aside (docs/configuration.md, "Saved knob state"). `read_only` (--print-config) reads and
+// warns but changes nothing on disk. The soak test builds its engine with this too, so it runs what the
+// binary runs.
 Result<systems::LiveTuning> load_tuning(const CliOptions& options, bool read_only = false);
 // Where presets are read from besides the built-in ones: /etc/puddle/presets, then presets/ beside the
 // config file (a later folder's preset of the same name wins).

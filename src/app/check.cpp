@@ -117,8 +117,7 @@ void check_clock(Report& r, const systems::ClockSync& sync, bool realtime,
     if (sync.synchronised)
         r.ok(what);
     else if (realtime)
-        r.fix(what +
-              "; wall.clock = \"realtime\" needs it: set up chrony or linuxptp (README \"Video walls\")");
+        r.fix(what + "; wall.clock = \"realtime\" needs it: set up chrony or linuxptp (docs/video-walls.md)");
     else
         r.absent(what + " (only walls, wall.clock = \"realtime\", need it)");
     r.note(fmt::format("wall.clock = \"{}\"", realtime ? "realtime" : "frame"));

@@ -38,7 +38,7 @@ void begin_frame_system(platform::Display& display, gpu::Device& device, const p
             spdlog::warn(
                 "wall: wall.bezel_x = {:g}, wall.bezel_y = {:g} pixels: a bezel wider than this {}x{} screen "
                 "hides more of the picture than a screen shows; bezels are the gap between two pictures in "
-                "this screen's pixels (README \"Video walls\")",
+                "this screen's pixels (docs/video-walls.md)",
                 bezel_x, bezel_y, upright.x, upright.y);
     }
     target.view = window;

@@ -1,6 +1,6 @@
 #pragma once
-// The registry as text: `puddle --list-params` and the README's parameter table (a test keeps the README
-// equal to format_params_markdown()).
+// The registry as text: `puddle --list-params` and the parameter table of docs/parameters.md (a test keeps
+// that table equal to format_params_markdown()).
 
 #include <span>
 #include <string>

@@ -2,7 +2,7 @@
 // A `[[schedule]]` table of the config as data: when it is active (a schedule::Rule) and what applies
 // while it is (a preset and parameter values). `display = "off"` and `brightness = 0.4` are written as
 // the parameter values they stand for (display.power, display.brightness), so the schedule layer is one
-// list of values per entry. The README's "Schedules and display power" section states the rules.
+// list of values per entry. docs/schedules.md states the rules.
 
 #include <optional>
 #include <string>

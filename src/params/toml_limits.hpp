@@ -3,7 +3,7 @@
 // before toml++ sees it. toml++ 3.3 bounds nested arrays and inline tables (TOML_MAX_NESTED_VALUES) but
 // not dotted keys or table headers: `a.a.a. ... .a = 1` 50 000 levels deep overflows the stack (SIGSEGV).
 // The limits are far above what a real config needs (its deepest value is a [[knob]] key at 3 levels, its
-// longest key under 20 bytes, the shipped config 14 KiB), so only a broken or hostile file meets them.
+// longest key under 20 bytes, the shipped config about 19 KiB), so only a broken or hostile file meets them.
 
 #include <cstddef>
 #include <string>

@@ -3,7 +3,7 @@
 // (remote.* in params.def), with the defaults that depend on the machine filled in and the password read
 // from its file.
 //
-// Topics under the prefix P (README "Remote control" has the table):
+// Topics under the prefix P (docs/remote-control.md has the table):
 //   in:  P/set/<parameter>  P/preset/set  P/command   (the same three under the fleet prefix; commands,
 //        so a retained message there is ignored: remote_request.hpp)
 //        homeassistant/status ("online": discovery is published again; may be retained)

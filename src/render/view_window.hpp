@@ -1,6 +1,6 @@
 #pragma once
 // The view is one virtual screen; a frame target shows a window of it. A single screen shows all of it.
-// A screen of a video wall (wall.*, README "Video walls") shows its tile: the whole view has the size of
+// A screen of a video wall (wall.*, docs/video-walls.md) shows its tile: the whole view has the size of
 // the wall, columns * width + (columns - 1) * bezel_x by rows * height + (rows - 1) * bezel_y pixels, and
 // the screens' pictures sit in it with the bezels' gaps between them, so the picture goes on behind the
 // frames. Everything the scene passes work out in screen space takes the whole view's coordinates: the

@@ -3,7 +3,7 @@
 // instant `at`, times of the clock or of sunrise and sunset with an offset), evaluated in local time
 // from the system's time zone database (TZ, /etc/localtime), daylight saving included.
 //
-// Rules, as the README states them:
+// Rules, as docs/schedules.md states them:
 // - `days` names the days a window starts (or an instant fires) on; a window whose `to` is not after
 //   its `from` (as written, for two clock times) ends on the next day (`from = "23:00"`, `to = "07:00"`).
 // - One rule for the days the clocks move, as RFC 5545 and java.time have it: a clock time is read with

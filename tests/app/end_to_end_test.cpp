@@ -190,9 +190,9 @@ TEST(EndToEnd, StatsShowTheRenderScaleAndWhetherItIsAdaptive) {
     EXPECT_NE(adaptive.output.find(" (adaptive)\n"), std::string::npos) << adaptive.output;
 }
 
-// Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (README "Memory"), on Debian 12
-// with llvmpipe: about 110 MB peak, of which Mesa alone (an EGL context drawing one 1080p pass) is about
-// 90 MB: libLLVM and the driver about 61 MB of pages, LLVM's heap and the frame itself the rest. What
+// Issue 7 asks for a headless 1080p run under 64 MB resident. Measured (docs/measurements.md, "Memory"), on
+// Debian 12 with llvmpipe: about 110 MB peak, of which Mesa alone (an EGL context drawing one 1080p pass) is
+// about 90 MB: libLLVM and the driver about 61 MB of pages, LLVM's heap and the frame itself the rest. What
 // Puddle adds for a 1080p frame is held under 64 MB: the peak at 1920x1080 minus the peak of the same
 // run at 32x32. The absolute ceilings catch what a difference cannot: a fixed cost such as OpenImageIO's
 // 140 MB of libraries (they made the peak 224 MB and the file-backed part 140 MB before it became a module).

@@ -40,14 +40,15 @@ TEST(ManPage, HasTheSectionsDebianExpects) {
                                 ".SH EXIT STATUS", ".SH FILES", ".SH SEE ALSO"})
         EXPECT_TRUE(has_line(page, section)) << section;
     // whatis(1) and lexgrog read the NAME line as "name \- summary".
-    EXPECT_TRUE(has_line(page, "puddle \\- rain falling on a puddle, a real\\-time display for digital signage"));
+    EXPECT_TRUE(
+        has_line(page, "puddle \\- rain falling on a puddle, a real\\-time display for digital signage"));
 }
 
 TEST(ManPage, DocumentsEveryOptionAndExitCode) {
     const std::string page = format_man_page();
-    for (const char* option : {"\\fB\\-c\\fR, \\fB\\-\\-config\\fR \\fIFILE\\fR",
-                               "\\fB\\-\\-stats\\fR [\\fISECONDS\\fR]", "\\fB\\-\\-check\\fR",
-                               "\\fB\\-b\\fR, \\fB\\-\\-backend\\fR \\fIKIND\\fR", "\\fB\\-\\-version\\fR"})
+    for (const char* option :
+         {"\\fB\\-c\\fR, \\fB\\-\\-config\\fR \\fIFILE\\fR", "\\fB\\-\\-stats\\fR [\\fISECONDS\\fR]",
+          "\\fB\\-\\-check\\fR", "\\fB\\-b\\fR, \\fB\\-\\-backend\\fR \\fIKIND\\fR", "\\fB\\-\\-version\\fR"})
         EXPECT_TRUE(has_line(page, option)) << option;
     for (int code = 0; code <= 5; ++code) EXPECT_TRUE(has_line(page, ".B " + std::to_string(code))) << code;
 }

@@ -1,5 +1,5 @@
-// Keeps README.md's parameter table equal to params::format_params_markdown(), so the documentation can
-// never drift from params.def.
+// Keeps docs/parameters.md's parameter table equal to params::format_params_markdown(), so the
+// documentation can never drift from params.def.
 #include "params/param_docs.hpp"
 
 #include <gtest/gtest.h>
@@ -67,7 +67,8 @@ bool has_row(const std::vector<std::string>& lines, std::string_view prefix) {
 
 std::string how_to_fix(const std::string& expected, const std::string& written_to) {
     return fmt::format(
-        "\nHow to fix: copy the table printed by this test into README.md, between the lines\n{}\nand\n{}\n"
+        "\nHow to fix: copy the table printed by this test into docs/parameters.md, between the lines\n"
+        "{}\nand\n{}\n"
         "(nothing else between them, no blank lines). The expected table is also in {}.\n"
         "---- expected table ----\n{}---- end ----\n",
         begin_marker, end_marker, written_to, expected);
@@ -78,9 +79,9 @@ TEST(ReadmeTable, MatchesTheRegistry) {
     const auto out = test::output_dir() / "params-table.md";
     std::ofstream(out, std::ios::binary) << expected;
 
-    const std::string path = PUDDLE_SOURCE_DIR "/README.md";
+    const std::string path = PUDDLE_SOURCE_DIR "/docs/parameters.md";
     std::ifstream in(path, std::ios::binary);
-    ASSERT_TRUE(in) << path << ": cannot open; the README must hold the parameter table."
+    ASSERT_TRUE(in) << path << ": cannot open; docs/parameters.md must hold the parameter table."
                     << how_to_fix(expected, out.string());
     std::stringstream text;
     text << in.rdbuf();

@@ -153,7 +153,7 @@ TEST_P(SeamlessWall, StitchedTilesEqualTheWholeView) {
 }
 
 // Bezels of 10 and 6 pixels: each tile is the whole view's crop beside the gaps (what the frames hide).
-// The default look's stitched wall is also a golden image: the README shows it.
+// The default look's stitched wall is also a golden image: docs/video-walls.md shows it.
 TEST_P(SeamlessWall, TilesBesideBezelsEqualTheirCropOfTheWholeView) {
     const assets::Image stitched = check_wall(GetParam(), {10, 6});
     keep_for_inspection(stitched, std::string(GetParam().name) + "_bezels");

@@ -7,8 +7,8 @@
 // grew by less than 1 MB (at two checks in a row) and the open file descriptors are the same. Prints a
 // summary; exits 1 on the first violation with one line naming it, 2 on bad flags or a failed start.
 //
-//   build/tests/puddle-soak                      # 10^6 frames (README "Soak")
-//   build/tests/puddle-soak --frames 20000       # ctest soak_short
+//   build/tests/puddle-soak                      # 10^6 frames (docs/testing.md, "Soak")
+//   build/tests/puddle-soak --frames 27000 --check-every 1000   # ctest soak_short
 #include <fmt/format.h>
 #include <spdlog/sinks/base_sink.h>
 #include <spdlog/spdlog.h>
@@ -312,7 +312,8 @@ private:
 int run(int argc, char** argv) {
     Options o;
     std::string size = "64x36";
-    CLI::App cli{"puddle-soak: the display for a long time, compressed (README: Soak)", "puddle-soak"};
+    CLI::App cli{"puddle-soak: the display for a long time, compressed (docs/testing.md: Soak)",
+                 "puddle-soak"};
     cli.add_option("--frames", o.plan.frames, "Frames to run (1/60 s of simulated time each)")
         ->check(CLI::Range(1L, 1'000'000'000L));
     cli.add_option("--check-every", o.plan.check_every,

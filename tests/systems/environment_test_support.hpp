@@ -1,6 +1,6 @@
 #pragma once
 // Environment pictures the tests make themselves: float files through OpenImageIO, panoramas from a
-// function of direction, and a night skyline with HDR windows (the README's HDR picture).
+// function of direction, and a night skyline with HDR windows (docs/environments.md's HDR picture).
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -43,7 +43,8 @@ TEST(Golden, DownpourMirrorTurnedSky) {
 }
 
 // An HDR environment (made here: a city at night whose windows are 4 to 16 times brighter than white,
-// written as a Radiance .hdr like a Poly Haven download) reflected in the rain: the README's HDR picture.
+// written as a Radiance .hdr like a Poly Haven download) reflected in the rain: the HDR picture of
+// docs/environments.md.
 TEST(Golden, HdrCityLightsInTheRain) {
     TempDir dir;
     const std::string sky = (dir / "city.hdr").string();
@@ -55,7 +56,7 @@ TEST(Golden, HdrCityLightsInTheRain) {
                              90, golden_size));
 }
 
-// Scenes and drop models (issue 5), smaller: one picture each, also shown in the README. None of them
+// Scenes and drop models (issue 5), smaller: one picture each, also shown in docs/scenes.md. None of them
 // needs the wave field to settle (they are functions of time), so a few frames suffice.
 constexpr glm::ivec2 scene_golden_size{320, 180};
 

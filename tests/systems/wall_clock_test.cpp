@@ -58,7 +58,7 @@ TEST(WallClock, ChangeBoundaryIsTheNextWholePeriodPlusOne) {
     EXPECT_EQ(change_boundary(noon + 7 * ns_per_second, 5.0), noon + 15 * ns_per_second);
 }
 
-// The residual the README and wall.warmup's help state: 1e-4 at the default damping and warm-up.
+// The residual docs/video-walls.md and wall.warmup's help state: 1e-4 at the default damping and warm-up.
 TEST(WallClock, WarmUpResidualIsDampingToTheHalfSteps) {
     EXPECT_NEAR(warmup_residual(0.985, 1200), std::exp(600 * std::log(0.985)), 1e-15);
     EXPECT_LT(warmup_residual(0.985, 1200), 1.2e-4);

@@ -4,7 +4,7 @@
 # Pi's header. Writing pull-up/pull-down to a line's sim_gpioN/pull is a contact closing or opening: the
 # consumer gets real edge events from the kernel's GPIO character device.
 #
-# The knobs (the README's wiring: pull-ups, active low): an encoder on GPIO17/GPIO18 turning
+# The knobs (docs/configuration.md's wiring: pull-ups, active low): an encoder on GPIO17/GPIO18 turning
 # look.vignette, a push button on GPIO22 stepping the preset, a switch on GPIO27 for overlay.rain;
 # chip by label, lines by name. Each check is one VMTEST line; TAG names the backend (gpio: libgpiod 1,
 # gpio-v2: libgpiod 2).

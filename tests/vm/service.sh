@@ -113,7 +113,7 @@ svc_install() {
 # a GPIO chip, a switch on puddle's mock GPIO backend (fed from svc_knobs) is the state check's knob; with
 # the gpio test's gpio-sim chip (tests/vm/gpio.sh, which runs before this and leaves it configured but not
 # live) it is a switch on that real chip, opened by the service as user puddle through the shipped udev
-# rule's gpio group, wired as the README says (chip by label, line by name, pull-up, active low).
+# rule's gpio group, wired as docs/configuration.md shows (chip by label, line by name, pull-up, active low).
 svc_knobs=/run/vm/knobs.txt
 svc_real_chip=0
 svc_configure() {
