@@ -5,10 +5,12 @@
 //   next = 0.5 * (damping * (L + R + D + U - 2 * prev) + disturbance); edges clamp, so the border reflects.
 //
 // CAPILLARY: ripples of rain on shallow water. A leapfrog step of
-//   h_tt = c^2 lap(h) - beta lap(lap(h)) + 2 nu lap(h_t) - drag h_t + sources,
-// whose plane waves obey w^2 = c^2 k^2 + beta k^4 (capillary-gravity dispersion, Lamb, Hydrodynamics
-// section 266, with c and beta fitted to centimetre ripples) and fade at 2 nu k^2 (viscous damping,
-// Lamb section 348). In texel units with the factors of u_step (systems/capillary_step.hpp):
+//   h_tt = c^2 lap(h) - beta lap(lap(h)) + 2 nu lap(h_t) - drag h_t - w0^2 h + sources,
+// whose plane waves obey w^2 = c^2 k^2 + beta k^4 + w0^2 (capillary-gravity dispersion, Lamb,
+// Hydrodynamics section 266, with c and beta fitted to centimetre ripples; w0, far below any ripple's
+// frequency, returns the water to its level) and whose amplitude fades at nu k^2 + drag / 2 (viscous
+// damping, Lamb section 348, whose deep-water rate is 2 nu k^2). In texel units with the factors of
+// u_step (systems/capillary_step.hpp):
 //   next = h + keep (h - prev) + a lap(h) - b lap2(h) + v lap(h - prev) + sources.
 // The field is periodic (it repeats across the puddle). Rain falls here, hashed per cell and time slot,
 // so any number of drops costs the same: each cell of the rain grid gets at most one drop per slot, with

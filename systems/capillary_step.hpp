@@ -3,14 +3,14 @@
 // steps a fixed simulation step takes, from the physical parameters. The equation, in metres and seconds:
 //   h_tt = c^2 lap(h) - beta lap(lap(h)) + 2 nu lap(h_t) - drag h_t - w0^2 h
 // (c: wave.ring_speed, beta: wave.dispersion, nu: wave.viscosity, drag: wave.drag; plane waves obey
-// w^2 = c^2 k^2 + beta k^4 + w0^2 and fade at 2 nu k^2 + drag / 2; Lamb, Hydrodynamics, sections 266 and
-// 348). The last term returns the water to its level: the impulses, zero-mean in the plane, leave a
-// little net volume once sampled on texels, and without it the field's mean would wander for ever (and
-// screens of a wall, which forget their past by damping, would never agree). w0 = 2 rad/s is far below
-// any ripple's frequency (about 85 rad/s at 1.7 cm), so the rings are as before.
-// The explicit leapfrog is stable while dt^2 (8 c^2 / dx^2 + 64 beta / dx^4) < 4 (the checkerboard
-// mode's eigenvalues of the 5- and 13-point stencils) and 16 nu dt / dx^2 < 1; substeps keeps both
-// under 70% of the limit.
+// w^2 = c^2 k^2 + beta k^4 + w0^2, and their amplitude fades at nu k^2 + drag / 2 a second (Lamb,
+// Hydrodynamics, sections 266 and 348; his deep-water rate is 2 nu k^2, so nu here is twice the physical).
+// The last term returns the water to its level: the impulses, zero-mean in the plane, leave a little net
+// volume once sampled on texels, and without it the field's mean would wander for ever (and screens of a
+// wall, which forget their past by damping, would never agree). w0 = 2 rad/s is far below any ripple's
+// frequency (about 85 rad/s at 1.7 cm), so the rings are as before. The explicit leapfrog is stable while
+// dt^2 (8 c^2 / dx^2 + 64 beta / dx^4) < 4 (the checkerboard mode's eigenvalues of the 5- and 13-point
+// stencils) and 16 nu dt / dx^2 < 1; substeps keeps both under 70% of the limit.
 
 #include "params/param_store.hpp"
 

@@ -89,7 +89,7 @@ TEST(LiveTuningEndToEnd, ARunningDisplayReloadsAnEditedConfigAndSurvivesABadOne)
     // SIGHUP reloads too (a valid file again).
     { std::ofstream(config) << "[rain]\ndrop_count = 12\n"; }
     ASSERT_TRUE(puddle.wait_for("rain.drop_count 40 -> 12")) << puddle.log();
-    EXPECT_EQ(puddle.count("wave: 512x512 field"), 1) << "reloads did not restart the ripples";
+    EXPECT_EQ(puddle.count("wave: 256x256 field"), 1) << "reloads did not restart the ripples";
     const int reloads = puddle.count("config: reloaded");
     puddle.signal(SIGHUP);
     ASSERT_TRUE(puddle.wait_for("config: reloaded", reloads)) << puddle.log();

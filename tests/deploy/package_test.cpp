@@ -32,7 +32,7 @@ TEST(Package, DebHoldsBinaryConfigPresetsUnitUdevRuleAndUser) {
           "./usr/share/puddle/presets/downpour.toml", "./usr/share/puddle/presets/still_night.toml",
           "./usr/lib/systemd/system/puddle.service", "./usr/lib/udev/rules.d/99-puddle-gpio.rules",
           "./usr/lib/sysusers.d/puddle.conf", "./usr/share/doc/puddle/README.md",
-          "./usr/share/man/man1/puddle.1.gz"})
+          "./usr/share/doc/puddle/docs/architecture.md", "./usr/share/man/man1/puddle.1.gz"})
         EXPECT_NE(contents.find(path), std::string::npos) << path << " missing from:\n" << contents;
 
     const std::string info = run_command("dpkg-deb --info " + deb).output;

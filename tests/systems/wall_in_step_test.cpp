@@ -112,8 +112,9 @@ void expect_same_picture(const Residual& r) {
 }
 
 // b starts 2.5 s after a, framing 7 ms into a's period; after b's warm-up both show the same step, field
-// and frame at the same wall time. A second screen with a 1 s warm-up (its field keeps 0.985^30 = 0.64 of
-// its start) shows that the comparison sees a warm-up too short.
+// and frame at the same wall time. A second screen with a 1 s warm-up shows that the comparison sees a
+// warm-up too short: the capillary field forgets fast (wave.drag), yet what is left of its start after
+// 1 s is still some 40 times the tolerance.
 TEST(WallInStep, ScreensStartedSecondsApartShowTheSameFrameAfterWarmUp) {
     Tile a(start_ns + 3'000'000, {});
     ASSERT_TRUE(a.engine);
@@ -132,7 +133,7 @@ TEST(WallInStep, ScreensStartedSecondsApartShowTheSameFrameAfterWarmUp) {
     report("in step", r);
     report("with a 1 s warm-up (control)", control);
     expect_same_picture(r);
-    EXPECT_GT(control.heights, 100 * height_tolerance);
+    EXPECT_GT(control.heights, 10 * height_tolerance);
     EXPECT_GT(control.pixels.mean_abs_diff, 10 * pixel_mean_tolerance);
 }
 
