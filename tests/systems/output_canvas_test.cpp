@@ -17,9 +17,10 @@ constexpr int W = 160, H = 90;
 
 assets::Image render(const std::string& rotation, glm::ivec2 size, const std::string& scale = "1",
                      const std::string& brightness = "1") {
-    auto engine = make_engine(make_params({"display.rotation=" + rotation, "rain.seed=5",
-                                           "render.scale=" + scale, "display.brightness=" + brightness}),
-                              size);
+    auto engine =
+        make_engine(make_params({"display.rotation=" + rotation, "rain.seed=5", "overlay.rain=false",
+                                 "render.scale=" + scale, "display.brightness=" + brightness}),
+                    size);
     EXPECT_TRUE(engine);
     return engine ? render_frames(*engine, 30) : assets::Image{};
 }
