@@ -119,8 +119,8 @@ svc_real_chip=0
 svc_configure() {
     svc_set rain seed 7 && svc_set rain drop_count 32 && svc_set rain intensity 1.5 &&
         svc_set wave resolution 128 && svc_set render target_fps 0 && svc_set environment face_size 32 &&
-        svc_set ground checkerboard true && svc_set wave model '"reference"' && svc_set puddle shape '"box"' &&
-        svc_set overlay rain false || return 1
+        svc_set ground checkerboard true && svc_set wave model '"reference"' && svc_set puddle shape '"box"' ||
+        return 1
     local gpio=""
     if [ -d /sys/kernel/config/gpio-sim/puddle ] && declare -F gpio_sim_live >/dev/null && gpio_sim_live 1; then
         local n
