@@ -82,7 +82,8 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
     clock.accumulator = 0.0;
 
     const auto latency = std::llround(static_cast<double>(params.get<ParamId::wall_latency>()) * 1e9);
-    const std::int64_t target = step_at(wall.now_ns() + latency, rate);
+    const std::int64_t now = wall.now_ns();  // one reading a frame: the target, the pace and a restart agree
+    const std::int64_t target = step_at(now + latency, rate);
     steps.target_step = target;
     const bool field_needed = look.scene == Scene::puddle && look.drops == DropModel::pulse;
     // Looks without the wave field are functions of the step alone: they jump straight to it.
@@ -111,7 +112,7 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
         follow_the_clocks_time();
     } else if (const char* why = resync_reason(steps, field_needed, behind, warmup, max_hold)) {
         if (steps.joined && field_needed && steps.field_in_use && behind > warmup && !steps.reached_clock) {
-            fall_behind_the_wall(steps, clock, params, wall.now_ns(), rate);
+            fall_behind_the_wall(steps, clock, params, now, rate);
             follow_the_clocks_time();
         } else {
             if (steps.joined)
@@ -120,7 +121,7 @@ void wall_steps_system(const WallClock& wall, const OutputPower& power, const Sh
             else
                 spdlog::info("wall: {} at step {} ({} steps/s), {} steps of warm-up", why, target, rate,
                              warmup);
-            restart(clock, steps, target, warmup, wall.now_ns());
+            restart(clock, steps, target, warmup, now);
             behind = warmup;
         }
     }
