@@ -59,7 +59,7 @@ TEST(DisplayRotation, EachTurnIsTheUprightPictureTurnedClockwise) {
 }
 
 TEST(DisplayRotation, ChangingItWhileRunningTakesEffectOnTheNextFrame) {
-    auto engine = make_engine(make_params({"rain.seed=5"}), {W, H});
+    auto engine = make_engine(make_params({"rain.seed=5", "overlay.rain=false"}), {W, H});
     ASSERT_TRUE(engine);
     render_frames(*engine, 29);
     engine->params().set(params::ParamId::display_rotation, std::string("180"),
