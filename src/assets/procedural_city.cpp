@@ -19,8 +19,15 @@ struct Building {
     std::uint32_t id = 0;
 };
 
-Building building_in_slot(const CityView& v, int slot, std::uint32_t layer, float slot_deg, float min_h,
-                          float max_h, float tower_chance, float gap_chance) {
+// One layer of the far skyline: block heights in degrees, and the chances of a tower and of a gap.
+struct SkylineLayer {
+    float min_h, max_h;
+    float tower_chance, gap_chance;
+};
+
+Building building_in_slot(const CityView& v, int slot, std::uint32_t layer, float slot_deg,
+                          const SkylineLayer& l) {
+    const float min_h = l.min_h, max_h = l.max_h, tower_chance = l.tower_chance, gap_chance = l.gap_chance;
     const std::uint32_t h = hash(as_u32(slot), layer, v.key);
     Building b;
     b.id = h;
@@ -41,8 +48,12 @@ Vec3 window_colour(std::uint32_t h) {
                           : Vec3{0.65f, 0.8f, 1.0f};
 }
 
+// A far building's window grid, in degrees of view, and how many are lit.
 struct Windows {
-    float col_deg, row_deg, w_deg, h_deg, lit_min, lit_max, gain;
+    float col_deg, row_deg;  // grid pitch
+    float w_deg, h_deg;      // one window
+    float lit_min, lit_max;  // the lit fraction ranges between these over the buildings
+    float gain;              // brightness of a lit window
 };
 
 // Lit windows on a far building: a grid of small rectangles in degrees, some lit.
@@ -74,13 +85,21 @@ Vec3 far_skyline(const CityView& v, Vec3 c, float az_deg, float el_deg, float gl
     {
         constexpr float slot = 360.0f / 240.0f;
         const int i = static_cast<int>(az_deg / slot);
-        const Building b = building_in_slot(v, i, 1U, slot, 0.8f, 3.6f, 0.05f, 0.1f);
+        const Building b = building_in_slot(
+            v, i, 1U, slot, {.min_h = 0.8f, .max_h = 3.6f, .tower_chance = 0.05f, .gap_chance = 0.1f});
         if (b.present && el_deg < b.height + pix_deg) {
             const float x = az_deg - static_cast<float>(i) * slot;
             const float m =
                 cover(x, b.left, b.right, pix_deg) * clamp01((b.height - el_deg) / pix_deg + 0.5f);
             Vec3 col = mix(kBuilding, v.haze * glow, 0.3f);
-            col = col + far_windows(v, b, x, el_deg, {0.45f, 0.42f, 0.22f, 0.2f, 0.05f, 0.2f, 1.2f});
+            col = col + far_windows(v, b, x, el_deg,
+                                    {.col_deg = 0.45f,
+                                     .row_deg = 0.42f,
+                                     .w_deg = 0.22f,
+                                     .h_deg = 0.2f,
+                                     .lit_min = 0.05f,
+                                     .lit_max = 0.2f,
+                                     .gain = 1.2f});
             c = mix(c, col, m);
         }
     }
@@ -88,13 +107,21 @@ Vec3 far_skyline(const CityView& v, Vec3 c, float az_deg, float el_deg, float gl
     {
         constexpr float slot = 360.0f / 120.0f;
         const int i = static_cast<int>(az_deg / slot);
-        const Building b = building_in_slot(v, i, 2U, slot, 1.0f, 5.5f, 0.1f, 0.22f);
+        const Building b = building_in_slot(
+            v, i, 2U, slot, {.min_h = 1.0f, .max_h = 5.5f, .tower_chance = 0.1f, .gap_chance = 0.22f});
         if (b.present && el_deg < b.height + 0.5f) {
             const float x = az_deg - static_cast<float>(i) * slot;
             const float m =
                 cover(x, b.left, b.right, pix_deg) * clamp01((b.height - el_deg) / pix_deg + 0.5f);
             Vec3 col = mix(kBuilding, v.haze * glow, 0.12f);
-            col = col + far_windows(v, b, x, el_deg, {0.62f, 0.55f, 0.32f, 0.3f, 0.12f, 0.5f, 2.0f});
+            col = col + far_windows(v, b, x, el_deg,
+                                    {.col_deg = 0.62f,
+                                     .row_deg = 0.55f,
+                                     .w_deg = 0.32f,
+                                     .h_deg = 0.3f,
+                                     .lit_min = 0.12f,
+                                     .lit_max = 0.5f,
+                                     .gain = 2.0f});
             c = mix(c, col, m);
             // Red aviation light on top of towers.
             if (b.height > 5.5f) {

@@ -76,7 +76,11 @@ bool acquire_master(int fd) {
 // The card is read as `puddle --check` reads it (drm_inventory); only taking master is the probe's own.
 std::optional<std::string> check_card(const std::string& path, std::string& connector) {
     auto fd = open_card(path);
-    if (!fd) return fd.error().message.substr(5);  // drop "kms: ", the probe reason has no prefix
+    if (!fd) {  // the probe's reason has no "kms: " prefix: the line that reports it adds one
+        std::string_view reason = fd.error().message;
+        if (reason.starts_with("kms: ")) reason.remove_prefix(std::string_view("kms: ").size());
+        return std::string(reason);
+    }
     const DrmCardInfo card = read_drm_card(fd->get(), path);
     if (card.status == DrmCardStatus::NoOutputs)
         return fmt::format("{}: cannot modeset (render-only device?)", path);

@@ -31,10 +31,14 @@ public:
     Result(Error error) : v_(std::move(error)) {}
     bool ok() const { return v_.index() == 0; }
     explicit operator bool() const { return ok(); }
+    // value(), * and -> need ok(): on an error they throw std::bad_variant_access.
     T& value() & { return std::get<0>(v_); }
+    const T& value() const& { return std::get<0>(v_); }
     T&& value() && { return std::get<0>(std::move(v_)); }
     T& operator*() & { return value(); }
+    const T& operator*() const& { return value(); }
     T* operator->() { return &value(); }
+    const T* operator->() const { return &value(); }
     const Error& error() const { return std::get<1>(v_); }
 
 private:
