@@ -31,7 +31,7 @@ const vec3 BACK_LIGHT = vec3(0.52, 0.42, 0.34);
 const mat2 OCTAVE_ROTATION = mat2(0.70710678, 0.70710678, -0.70710678, 0.70710678);  // 45 degrees
 
 // Per octave, how far time has moved its two travelling terms, computed on the CPU in double
-// (systems/ocean_system.hpp), so the sea is continuous and precise for as long as the display runs:
+// (systems/ocean/ocean_system.hpp), so the sea is continuous and precise for as long as the display runs:
 // u_octave_shift is (fraction of a noise cell, sine phase modulo pi) of the forward term, then of the
 // backward one; u_octave_cells the whole noise cells of each (the bits of a uint).
 uniform vec4 u_octave_shift[MAX_OCTAVES];

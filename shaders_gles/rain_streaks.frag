@@ -12,7 +12,7 @@ in vec2 v_uv;  // 0..1 across the whole view, of which this target may be a tile
 out vec4 o_color;
 
 // Per layer, far to near: how far its streaks have fallen, in cells modulo 1 (a streak's fall repeats
-// every cell), from the CPU in double (systems/rain_overlay_system.hpp), so rain never jumps.
+// every cell), from the CPU in double (systems/rain_overlay/rain_overlay_system.hpp), so rain never jumps.
 uniform vec4 u_layer_fall;
 uniform vec2 u_resolution;    // the whole view (a whole video wall) in pixels of this target
 uniform int u_seed;

@@ -36,7 +36,7 @@ const int MAX_SOURCES = 32;
 const vec3 FLASH_COLOR = vec3(0.4, 0.45, 0.55);
 
 // Time arrives only as phases and offsets computed on the CPU in double, each modulo the period its term
-// repeats at (systems/street_system.hpp), so the street is continuous however long the display runs.
+// repeats at (systems/street/street_system.hpp), so the street is continuous however long the display runs.
 uniform vec2 u_lightning_phase;         // radians: 1.7 t + 3 and 2.3 t, modulo 2 pi
 // Drifts of the scrolled noises, split into whole lattice cells (the bits of a uint) and a fraction:
 uniform float u_cloud_shift[5];         // per cloud octave, sideways: fraction of a cell

@@ -10,7 +10,7 @@
 // Hydrodynamics section 266, with c and beta fitted to centimetre ripples; w0, far below any ripple's
 // frequency, returns the water to its level) and whose amplitude fades at nu k^2 + drag / 2 (viscous
 // damping, Lamb section 348, whose deep-water rate is 2 nu k^2). In texel units with the factors of
-// u_step (systems/capillary_step.hpp):
+// u_step (systems/water/capillary_step.hpp):
 //   next = h + keep (h - prev) + a lap(h) - b lap2(h) + v lap(h - prev) + sources.
 // The field is periodic (it repeats across the puddle). Rain falls here, hashed per cell and time slot,
 // so any number of drops costs the same: each cell of the rain grid gets at most one drop per slot, with
@@ -68,7 +68,7 @@ void main() {
 #endif
 }
 #else
-uniform vec4 u_step;        // a, b, v, keep (systems/capillary_step.hpp)
+uniform vec4 u_step;        // a, b, v, keep (systems/water/capillary_step.hpp)
 uniform float u_level;      // w0^2 dt^2: the pull back to the water's level
 uniform vec4 u_drop_shape;  // texel size in mm, drop gain (height units per pass at the peak), seconds this
                             // pass ends before the step (<= 0, added to u_drops' ages), 0

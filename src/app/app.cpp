@@ -10,7 +10,6 @@
 
 #include "app/check.hpp"
 #include "app/cli.hpp"
-#include "app/display_power.hpp"
 #include "app/engine.hpp"
 #include "app/frame_stats.hpp"
 #include "app/logging.hpp"
@@ -29,10 +28,11 @@
 #include "params/wall_check.hpp"
 #include "platform/console_mode.hpp"
 #include "schedule/zone_watch.hpp"
-#include "systems/live_tuning.hpp"
-#include "systems/puddle_plugin.hpp"
-#include "systems/schedule_system.hpp"
-#include "systems/wall_steps.hpp"
+#include "systems/clock/wall_steps.hpp"
+#include "systems/display/display_power.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
+#include "systems/tuning/live_tuning.hpp"
+#include "systems/tuning/schedule_system.hpp"
 #include "util/valid_utf8.hpp"
 
 namespace puddle::app {
@@ -149,7 +149,7 @@ std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signal
         },
         [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
         systems::add_schedule,
-        add_display_power,
+        systems::add_display_power,
         systems::add_puddle_plugin,
         add_remote_plugin,
     };

@@ -8,7 +8,7 @@
 #include "app/engine.hpp"
 #include "app/service_notify.hpp"
 #include "app/signals.hpp"
-#include "systems/live_tuning.hpp"
+#include "systems/tuning/live_tuning.hpp"
 #include "util/result.hpp"
 
 namespace puddle::app {

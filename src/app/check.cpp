@@ -22,8 +22,8 @@
 #include "platform/drm_inventory.hpp"
 #include "schedule/time_zone.hpp"
 #include "schedule/zone_watch.hpp"
-#include "systems/schedule_system.hpp"
-#include "systems/wall_steps.hpp"
+#include "systems/clock/wall_steps.hpp"
+#include "systems/tuning/schedule_system.hpp"
 
 namespace puddle::app {
 

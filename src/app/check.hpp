@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gpu/capabilities.hpp"
-#include "systems/wall_clock.hpp"
+#include "systems/clock/wall_clock.hpp"
 
 namespace puddle::app {
 

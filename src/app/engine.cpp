@@ -27,7 +27,7 @@ Result<std::unique_ptr<Engine>> Engine::create(const params::Params& params,
                          context.error().message);
     }
     world.insert_resource<params::Params>(params);
-    if (auto r = add_display_plugin(world, engine->schedule_); !r) return r.error();
+    if (auto r = systems::add_display_plugin(world, engine->schedule_); !r) return r.error();
     for (const Plugin& plugin : plugins)
         if (auto r = plugin(world, engine->schedule_); !r) return r.error();
     for (const std::string& line : engine->schedule_.describe()) spdlog::debug("schedule: {}", line);
@@ -41,7 +41,7 @@ Engine::~Engine() = default;
 Result<void> Engine::frame(double dt) {
     world_.resource<ecs::FrameTime>().dt_seconds = dt;
     schedule_.run_frame(world_);
-    return world_.resource<PresentStatus>().result;
+    return world_.resource<systems::PresentStatus>().result;
 }
 
 void Engine::shutdown() {
@@ -50,7 +50,7 @@ void Engine::shutdown() {
 }
 
 assets::Image Engine::read_frame() {
-    return read_display(display(), device());
+    return systems::read_display(display(), device());
 }
 
 }  // namespace puddle::app

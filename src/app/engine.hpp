@@ -7,13 +7,13 @@
 #include <memory>
 #include <vector>
 
-#include "app/frame_systems.hpp"
 #include "assets/image.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
 #include "platform/display.hpp"
+#include "systems/display/display_plugin.hpp"
 #include "util/result.hpp"
 
 namespace puddle::app {
@@ -25,9 +25,9 @@ public:
     using Plugin = std::function<Result<void>(ecs::World&, ecs::Schedule&)>;
 
     // Makes the display (exit code 4 on failure) and the device, installs the display plugin
-    // (app/frame_systems.hpp: the frame's start, the output canvas, capture and present), then each of
-    // `plugins` in order (their errors, such as an asset that does not load (3), are returned as they are).
-    // The schedule is logged at debug level, one line per system.
+    // (systems/display/display_plugin.hpp: the frame's start, the output canvas, capture and present), then
+    // each of `plugins` in order (their errors, such as an asset that does not load (3), are returned as they
+    // are). The schedule is logged at debug level, one line per system.
     static Result<std::unique_ptr<Engine>> create(const params::Params& params,
                                                   const platform::DisplayOptions& display_options,
                                                   const gpu::DeviceOptions& device_options,
@@ -43,10 +43,10 @@ public:
     void shutdown();
 
     // The next frame is read back before it is presented (a window or KMS may not keep it).
-    void capture_next_frame() { world_.resource<FrameCapture>().requested = true; }
-    const assets::Image& captured() { return world_.resource<FrameCapture>().image; }
+    void capture_next_frame() { world_.resource<systems::FrameCapture>().requested = true; }
+    const assets::Image& captured() { return world_.resource<systems::FrameCapture>().image; }
     // Hands the captured frame over (8 MB at 1080p) rather than copying it.
-    assets::Image take_captured() { return std::move(world_.resource<FrameCapture>().image); }
+    assets::Image take_captured() { return std::move(world_.resource<systems::FrameCapture>().image); }
     // Reads the frame target now (headless: always valid after a frame).
     assets::Image read_frame();
 

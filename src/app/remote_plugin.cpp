@@ -32,7 +32,7 @@ Result<void> select_preset(systems::LiveTuning& t, const std::string& name, cons
     return {};
 }
 
-Result<void> apply(RemoteControl& r, systems::LiveTuning& t, FrameCapture& capture,
+Result<void> apply(RemoteControl& r, systems::LiveTuning& t, systems::FrameCapture& capture,
                    const remote::Request& request) {
     using remote::Command;
     if (const auto* set = std::get_if<remote::SetParam>(&request)) {
@@ -65,7 +65,7 @@ Result<void> apply(RemoteControl& r, systems::LiveTuning& t, FrameCapture& captu
             systems::start_state_save(t);
             return {};
         case Command::Screenshot:
-            capture.requested = true;  // read back before the next present (capture_system)
+            capture.requested = true;  // read back before the next present (systems::capture_system)
             r.screenshot_wanted = true;
             return {};
         case Command::Reload:
@@ -111,7 +111,7 @@ void RemoteControl::reply_error(const std::string& topic, const std::string& mes
     client->publish(settings.prefix + "/error", remote::error_document(topic, message), false);
 }
 
-void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, FrameCapture& capture) {
+void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, systems::FrameCapture& capture) {
     r.client->drain(r.inbox);
     if (const std::uint64_t dropped = r.client->take_dropped())
         r.reply_error(
@@ -139,7 +139,7 @@ void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, Frame
 }
 
 void remote_publish_system(RemoteControl& r, const params::Params& params, const systems::LiveTuning& tuning,
-                           FrameCapture& capture) {
+                           systems::FrameCapture& capture) {
     r.stats.tick();
     const std::uint64_t connections = r.client->connections();
     const bool reconnected = connections != r.connections_seen;

@@ -1,5 +1,5 @@
 #pragma once
-// Remote control over MQTT (issue 18) as systems; the client, its topics and Home Assistant discovery
+// Remote control over MQTT as systems; the client, its topics and Home Assistant discovery
 // are src/remote's, this file wires them to the frame:
 //   input:   remote commands  takes what the network thread received (never waits for it) and applies
 //                             it to live tuning's layers: a parameter (source Remote, saved with the
@@ -18,13 +18,13 @@
 #include <vector>
 
 #include "app/frame_stats.hpp"
-#include "app/frame_systems.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
 #include "remote/mqtt_client.hpp"
 #include "remote/remote_settings.hpp"
-#include "systems/camera_system.hpp"
-#include "systems/live_tuning.hpp"
+#include "systems/display/display_plugin.hpp"
+#include "systems/sky/camera_system.hpp"
+#include "systems/tuning/live_tuning.hpp"
 #include "util/background_job.hpp"
 #include "util/result.hpp"
 
@@ -57,9 +57,10 @@ struct RemoteControl {
     void reply_error(const std::string& topic, const std::string& message);
 };
 
-void remote_commands_system(RemoteControl& remote, systems::LiveTuning& tuning, FrameCapture& capture);
+void remote_commands_system(RemoteControl& remote, systems::LiveTuning& tuning,
+                            systems::FrameCapture& capture);
 void remote_publish_system(RemoteControl& remote, const params::Params& params,
-                           const systems::LiveTuning& tuning, FrameCapture& capture);
+                           const systems::LiveTuning& tuning, systems::FrameCapture& capture);
 
 // Needs Params and LiveTuning in the world (and the puddle's CameraFeed, when there is one). With
 // remote.enabled it starts the client and registers the systems above; with remote.enabled = false and

@@ -8,7 +8,7 @@ void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning) {
     if (signals.take_reload()) tuning.reload_requested = true;
 }
 
-void watchdog_ping_system(ServiceNotify& service, const PresentStatus& presented) {
+void watchdog_ping_system(ServiceNotify& service, const systems::PresentStatus& presented) {
     if (presented.result) service.frame_presented(monotonic_seconds());
 }
 

@@ -9,18 +9,18 @@
 
 #include <memory>
 
-#include "app/frame_systems.hpp"
 #include "app/service_notify.hpp"
 #include "app/signals.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
-#include "systems/live_tuning.hpp"
+#include "systems/display/display_plugin.hpp"
+#include "systems/tuning/live_tuning.hpp"
 #include "util/result.hpp"
 
 namespace puddle::app {
 
 void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning);
-void watchdog_ping_system(ServiceNotify& service, const PresentStatus& presented);
+void watchdog_ping_system(ServiceNotify& service, const systems::PresentStatus& presented);
 void service_stopping_system(ServiceNotify& service);
 
 // Inserts `signals` and `service` as resources and registers the systems above. Live tuning

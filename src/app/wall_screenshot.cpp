@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "params/param_store.hpp"
-#include "systems/frame_clock.hpp"
-#include "systems/wall_clock.hpp"
-#include "systems/wall_steps.hpp"
+#include "systems/clock/frame_clock.hpp"
+#include "systems/clock/wall_clock.hpp"
+#include "systems/clock/wall_steps.hpp"
 
 namespace puddle::app {
 

@@ -1,6 +1,6 @@
 #pragma once
 // puddle --screenshot-at TIME (video walls, docs/video-walls.md): with wall.clock = "realtime", the run
-// holds its wave field at the step that wall time TIME falls in (systems/wall_steps.hpp, stop_step),
+// holds its wave field at the step that wall time TIME falls in (systems/clock/wall_steps.hpp, stop_step),
 // renders that step once more, writes it and ends. Every screen of a wall given the same TIME writes the
 // same step, so their pictures can be laid side by side to check the wall's alignment and bezels.
 

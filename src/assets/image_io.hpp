@@ -20,7 +20,7 @@ Result<Image> read_image(const std::string& path, PixelFormat want = PixelFormat
 Result<Image> read_color_image(const std::string& path);
 // What a file's header says, read without decoding a pixel (ImageInput::open through the module): the
 // size and the format the matching read_* call would return. Callers check their own size and shape
-// rules against it first, so a file that would be refused costs a header read, not a decode (issue 15).
+// rules against it first, so a file that would be refused costs a header read, not a decode.
 struct ImageInfo {
     int width = 0;   // pixels
     int height = 0;  // pixels

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "bench/camera_benchmarks.hpp"
-#include "systems/puddle_plugin.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
 
 namespace puddle::bench {
 

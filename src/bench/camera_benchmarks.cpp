@@ -8,7 +8,7 @@
 #include "bench/bench_engine.hpp"
 #include "camera/mjpeg_decoder.hpp"
 #include "camera/mjpeg_encoder.hpp"
-#include "systems/camera_environment.hpp"
+#include "systems/sky/camera_environment.hpp"
 
 namespace puddle::bench {
 
@@ -16,7 +16,7 @@ using params::Params;
 
 namespace {
 
-// --- camera frames (issue 4): what one 1280x720 camera frame costs -------------------------------------
+// --- camera frames: what one 1280x720 camera frame costs -------------------------------------
 // cpu: the copy (glTexSubImage2D of a YUYV frame, padded rows as drivers give them) or the MJPEG decode;
 // gpu: the YUV conversion pass plus the six small environment cube faces and their mipmaps. The
 // zero-copy path needs a dmabuf exporter; where EGL has no dmabuf import (llvmpipe), the external
@@ -67,7 +67,7 @@ void bench_camera_gpu(benchmark::State& state) {
     gpu::Device& device = current_bench()->engine->device();
     (void)systems::upload_camera_frame(device, cb->image, cb->env);
     measure(state, device, [&] {
-        cb->env.convert_due = true;  // as after each new frame
+        cb->env.frame = systems::CameraFrame::uploaded;  // as after each new frame
         systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(),
                                            cb->env);
     });
@@ -99,7 +99,7 @@ void bench_camera_external(benchmark::State& state) {
     (void)systems::upload_camera_frame(device, cb->image, cb->env);  // sizes the colour texture
     measure(state, device, [&] {
         cb->env.pending_import = &*image;
-        cb->env.convert_due = true;
+        cb->env.frame = systems::CameraFrame::uploaded;
         systems::camera_environment_system(device, w.resource<Params>(), w.resource<systems::Environment>(),
                                            cb->env);
     });

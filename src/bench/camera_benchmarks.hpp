@@ -1,6 +1,6 @@
 #pragma once
 // What one 1280x720 camera frame costs: the CPU copy or MJPEG decode, the GPU conversion into the cube,
-// and the external sampler (systems/camera_environment.hpp).
+// and the external sampler (systems/sky/camera_environment.hpp).
 
 #include "bench/bench_report.hpp"
 

@@ -8,11 +8,11 @@
 
 #include "bench/bench_engine.hpp"
 #include "params/config_loader.hpp"
-#include "systems/analytic_ripple_system.hpp"
-#include "systems/frame_clock.hpp"
-#include "systems/grid_drop_system.hpp"
-#include "systems/scene_select.hpp"
-#include "systems/surface_system.hpp"
+#include "systems/analytic_ripples/analytic_ripple_system.hpp"
+#include "systems/clock/frame_clock.hpp"
+#include "systems/common/shown_look.hpp"
+#include "systems/grid_drops/grid_drop_system.hpp"
+#include "systems/water/surface_system.hpp"
 
 namespace puddle::bench {
 
@@ -21,7 +21,7 @@ using params::Params;
 
 namespace {
 
-// Scenes and drop models (issue 5): a whole frame of each look at 1920x1080, chosen by the same --set
+// Scenes and drop models: a whole frame of each look at 1920x1080, chosen by the same --set
 // lines an operator would write. Grid at 10 and 1000 drops/s (the goal: at most 10% more), analytic at
 // 100 and 500 sources. Each run restores the default look, so the benchmarks above stay comparable.
 struct Look {
@@ -32,7 +32,7 @@ const std::vector<Look>& looks() {
     static const std::vector<Look> all{
         {"puddle_pulse", {}},
         {"puddle_scale_0.5", {"render.scale=0.5"}},
-        // The old default's ground (issue 21: the paving may cost at most 10% more than this).
+        // The old default's ground (the paving may cost at most 10% more than this).
         {"puddle_checkerboard", {"ground.checkerboard=true"}},
         {"puddle_grid_10", {"drops.model=grid", "grid.drops_per_second=10"}},
         {"puddle_grid_1000", {"drops.model=grid", "grid.drops_per_second=1000"}},

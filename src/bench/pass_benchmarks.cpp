@@ -7,9 +7,9 @@
 #include <string>
 
 #include "bench/bench_engine.hpp"
-#include "systems/render_system.hpp"
-#include "systems/surface_system.hpp"
-#include "systems/wave_system.hpp"
+#include "systems/puddle/render_system.hpp"
+#include "systems/water/surface_system.hpp"
+#include "systems/water/wave_system.hpp"
 
 namespace puddle::bench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "systems/wave_system.hpp"
+#include "systems/water/wave_system.hpp"
 
 namespace puddle::bench {
 

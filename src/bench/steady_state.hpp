@@ -2,7 +2,7 @@
 // The wave field a wall shows all day, for puddle-bench to time: rain on a calm start roughens the water
 // for a few hundred steps, and a rough surface costs more to render (the refine step and the reflected
 // directions spread, so texture reads lose their locality): 46 to 56 ms against 42 ms at 1080p on one
-// llvmpipe machine (issue 21). The benchmark times the steady state; the calm start stays a labelled extra.
+// llvmpipe machine. The benchmark times the steady state; the calm start stays a labelled extra.
 //
 // Why this is steady: each step keeps wave.damping (0.985) of the field and the drops add a bounded
 // impulse per step, so the roughness approaches the level where the two balance with a time constant of

@@ -53,7 +53,8 @@ std::string source_stamp(const CaptureRequest& request);
 
 // request.device "mock:PATH" opens the mock, anything else a V4L2 device through io. Blocks: a UVC
 // camera's VIDIOC_S_FMT or VIDIOC_STREAMON can take seconds, a mock folder as long to decode, so the
-// frame loop calls this on a worker thread (systems/camera_system.hpp); `stop` reaches the mock's decoding.
+// frame loop calls this on a worker thread (systems/sky/camera_system.hpp); `stop` reaches the mock's
+// decoding.
 Result<std::unique_ptr<CameraSource>> open_camera_source(V4l2Io& io, const CaptureRequest& request,
                                                          std::stop_token stop = {});
 

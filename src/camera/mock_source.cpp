@@ -126,7 +126,7 @@ Result<std::unique_ptr<CameraSource>> open_mock_source(const std::string& path, 
         files.push_back(path);
     }
     // Every header first (cheap: no pixel is decoded), so a folder that breaks a rule is refused
-    // before the decode it would cost: on a small board, 16000x16000 PNGs take gigabytes (issue 15).
+    // before the decode it would cost: on a small board, 16000x16000 PNGs take gigabytes.
     std::size_t bytes = 0;
     std::optional<assets::ImageInfo> first;
     for (const std::string& file : files) {

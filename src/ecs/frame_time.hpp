@@ -2,7 +2,7 @@
 // Resource: the time one frame advances, the schedule's one input from outside. Whoever runs frames
 // sets it before each run (app::Engine::frame): the real time since the last frame, or a fixed step
 // where runs must repeat exactly (headless, tests). Systems turn it into simulation steps
-// (systems/frame_clock.hpp) or their own clocks.
+// (systems/clock/frame_clock.hpp) or their own clocks.
 
 namespace puddle::ecs {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Links pipelines' programs on a worker thread (every signal blocked: util/worker_thread.hpp), in a context
 // that shares objects with the frame thread's (gpu/worker_context.hpp), so a look or variant chosen while the
-// display runs never stops the frame loop or the watchdog ping for a compile (issue 15: nothing slow on the
+// display runs never stops the frame loop or the watchdog ping for a compile (nothing slow on the
 // frame thread). The frame thread submits a PipelineDesc and polls the job; Device::take_pipeline turns a
 // finished job into a Pipeline. Jobs run one at a time, in submission order.
 //

@@ -26,7 +26,7 @@ struct KnobAction {
 
 // The chips whose loss has been warned about: the knobs on one unplugged chip give one warning between
 // them, not one each. A chip leaves the list when one of its knobs opens again, so a second unplug warns
-// again. Owned by whoever updates the knobs (systems/live_tuning.cpp); it grows only on an unplug.
+// again. Owned by whoever updates the knobs (systems/tuning/live_tuning.cpp); it grows only on an unplug.
 class GoneChips {
 public:
     // True for the first knob to find `chip` gone, false for the others until it is back.

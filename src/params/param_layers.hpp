@@ -54,7 +54,7 @@ public:
     // The schedule layer, between the config and the knobs: the config's [[schedule]] entries active now,
     // as indices into config().schedule in file order; each applies its preset's values, then its own, and
     // a later entry wins. set_config keeps only indices that still exist: the schedule system evaluates
-    // the new entries (systems/schedule_system.hpp). Returns true when the set changed.
+    // the new entries (systems/tuning/schedule_system.hpp). Returns true when the set changed.
     bool set_active_schedule(std::vector<int> active);
     const std::vector<int>& active_schedule() const { return schedule_active_; }
     // At a schedule transition: forgets the knob values of the parameters entry `entry` sets (its values

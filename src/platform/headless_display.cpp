@@ -39,7 +39,7 @@ public:
     bool poll_events() override { return true; }
     // Nothing to show, but paced like a swap chain two frames deep: wait until the frame before this one
     // is done on the GPU. A bare glFlush let llvmpipe queue dozens of slow frames (the ocean) and then
-    // block for all of them at once, 5 to 11 s without a watchdog ping (issue 15, fault 6).
+    // block for all of them at once, 5 to 11 s without a watchdog ping.
     Result<void> present() override {
         GLsync done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         glFlush();

@@ -30,7 +30,7 @@ struct Inbound {
 };
 
 // When a change is to apply, for the screens of a wall (wall.clock = "realtime"): nanoseconds since the
-// Unix epoch; none: at the next change boundary (systems/synced_changes.hpp). A payload asks for it by
+// Unix epoch; none: at the next change boundary (systems/tuning/synced_changes.hpp). A payload asks for it by
 // ending in " apply_at=<seconds since the Unix epoch>", e.g. "0.5 apply_at=1764590402.5".
 using ApplyAt = std::optional<std::int64_t>;
 

@@ -3,7 +3,7 @@
 // when someone turns a knob or edits the config (render method, ground kind, RGBM sky, tone curve)
 // become #defines, so the shader carries only the path it takes: no pixel pays for a branch it never
 // takes, and nothing is computed for a ground the water hides. Each variant is compiled the first time
-// it is needed (systems/render_system.cpp).
+// it is needed (systems/puddle/render_system.cpp).
 
 #include <array>
 #include <cstddef>

@@ -1,8 +1,8 @@
-// Tests for src/app/display_power.hpp on a real headless engine drawing the puddle: display.power off shows
-// one black frame, then runs no pass and presents nothing while the loop sleeps (CPU measured), with the
-// present status good for the watchdog; the simulation clock keeps time, so the picture comes back at the
+// Tests for systems/display/display_power.hpp on a real headless engine drawing the puddle: display.power off
+// shows one black frame, then runs no pass and presents nothing while the loop sleeps (CPU measured), with
+// the present status good for the watchdog; the simulation clock keeps time, so the picture comes back at the
 // current time; CEC messages go out through a fake adapter, and a TV that does not answer is a warning.
-#include "app/display_power.hpp"
+#include "systems/display/display_power.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -13,8 +13,8 @@
 #include "app/engine.hpp"
 #include "support/fake_cec_adapter.hpp"
 #include "support/log_lines.hpp"
-#include "systems/frame_clock.hpp"
-#include "systems/puddle_plugin.hpp"
+#include "systems/clock/frame_clock.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
 
 namespace puddle::app {
 namespace {
@@ -26,8 +26,8 @@ std::unique_ptr<Engine> puddle_engine() {
     platform::DisplayOptions display;
     display.backend = platform::BackendKind::Headless;
     display.size = {160, 90};
-    auto engine =
-        Engine::create(params::Params{}, display, {}, {add_display_power, systems::add_puddle_plugin});
+    auto engine = Engine::create(params::Params{}, display, {},
+                                 {systems::add_display_power, systems::add_puddle_plugin});
     if (!engine.ok()) ADD_FAILURE() << engine.error().message;
     return engine.ok() ? std::move(*engine) : nullptr;
 }
@@ -68,7 +68,7 @@ TEST(DisplayPower, OffShowsOneBlackFrameThenSleepsWithoutPassesAndOnComesBackAtT
     const auto& clock = e.world().resource<systems::FrameClock>();
     const double off_at = clock.sim_time;
 
-    // About a second of frames while off: each sleeps off_frame_sleep_seconds, so about ten of them.
+    // About a second of frames while off: each sleeps systems::off_frame_sleep_seconds, so about ten of them.
     const double cpu_before = cpu_seconds();
     const auto wall_before = std::chrono::steady_clock::now();
     int frames = 0;
@@ -78,7 +78,7 @@ TEST(DisplayPower, OffShowsOneBlackFrameThenSleepsWithoutPassesAndOnComesBackAtT
         ++frames;
     }
     const double cpu_used = cpu_seconds() - cpu_before;
-    EXPECT_LE(frames, 11) << "each frame sleeps " << off_frame_sleep_seconds << " s while off";
+    EXPECT_LE(frames, 11) << "each frame sleeps " << systems::off_frame_sleep_seconds << " s while off";
     // Bound: 5% of one core over the second (0.05 s); drawing the puddle at 60 frames a second on llvmpipe
     // takes far more than that.
     EXPECT_LT(cpu_used, 0.05) << frames << " frames took " << cpu_used << " s of CPU";
@@ -95,7 +95,7 @@ TEST(DisplayPower, CecSendsStandbyGoingOffAndWakesTheTvComingOnAndANoAnswerIsAWa
     ASSERT_TRUE(engine);
     Engine& e = *engine;
     test::FakeCecAdapter tv;
-    auto& state = e.world().resource<DisplayPower>();
+    auto& state = e.world().resource<systems::DisplayPower>();
     state.cec_io = &tv;
     ASSERT_TRUE(e.params().set<ParamId::display_cec>(true, ParamSource::Config));
     auto wait_for_cec = [&] {

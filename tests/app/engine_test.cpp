@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "app/app.hpp"
+#include "ecs/frame_time.hpp"
 #include "support/puddle_schedule.hpp"
 #include "support/test_support.hpp"
-#include "systems/puddle_plugin.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
 
 namespace puddle::app {
 namespace {

@@ -1,7 +1,7 @@
-// The steady-state frame loop allocates nothing (issue 7): global operator new/delete are replaced in
+// The steady-state frame loop allocates nothing: global operator new/delete are replaced in
 // this executable by counting ones, and a few hundred headless frames after a warm-up must count zero.
 // The binary's own loop adds live tuning and the --stats ring buffer, so both run here too; remote
-// control (issue 18) runs connected to a real broker, its network thread counted too.
+// control runs connected to a real broker, its network thread counted too.
 //
 // Only C++ allocations are counted (operator new, which our code, the standard library, spdlog and fmt
 // go through); Mesa's own C allocations inside the GL driver are the driver's business.
@@ -16,16 +16,16 @@
 #include <string>
 #include <thread>
 
-#include "app/display_power.hpp"
 #include "app/frame_stats.hpp"
 #include "app/remote_plugin.hpp"
 #include "params/config_loader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/mosquitto_broker.hpp"
-#include "systems/adaptive_scale.hpp"
-#include "systems/live_tuning.hpp"
-#include "systems/puddle_plugin.hpp"
-#include "systems/schedule_system.hpp"
+#include "systems/display/display_power.hpp"
+#include "systems/output/adaptive_scale.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
+#include "systems/tuning/live_tuning.hpp"
+#include "systems/tuning/schedule_system.hpp"
 
 namespace {
 
@@ -211,7 +211,7 @@ TEST(FrameAllocation, SteadyStateFramesWithAScheduleAllocateNothing) {
                             {[&](ecs::World& world, ecs::Schedule& schedule) {
                                  return systems::add_live_tuning(world, schedule, std::move(tuning));
                              },
-                             systems::add_schedule, app::add_display_power, systems::add_puddle_plugin});
+                             systems::add_schedule, systems::add_display_power, systems::add_puddle_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
     (*engine)->world().resource<systems::WallClock>().now_ns = [] {
         return std::int64_t{1'780'000'000 + 3600} * systems::ns_per_second;

@@ -1,8 +1,6 @@
-// Tests for src/app/frame_systems.hpp: on a real headless engine, the capture system reads the frame back
-// only when asked and gives exactly the pixels drawn, top row first; PresentStatus holds what the last
-// present returned.
-#include "app/frame_systems.hpp"
-
+// Tests for systems/display/display_plugin.hpp: on a real headless engine, the capture system reads the frame
+// back only when asked and gives exactly the pixels drawn, top row first; systems::PresentStatus holds what
+// the last present returned.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -13,7 +11,8 @@
 #include "app/engine.hpp"
 #include "gpu/render_pass.hpp"
 #include "support/test_support.hpp"
-#include "systems/puddle_plugin.hpp"
+#include "systems/display/display_plugin.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
 
 namespace puddle::app {
 namespace {
@@ -104,7 +103,7 @@ TEST(FrameSystems, NothingIsReadBackUnlessAsked) {
 
     engine->capture_next_frame();
     ASSERT_TRUE(engine->frame(1.0 / 60).ok());
-    EXPECT_FALSE(engine->world().resource<FrameCapture>().requested) << "a request is for one frame";
+    EXPECT_FALSE(engine->world().resource<systems::FrameCapture>().requested) << "a request is for one frame";
     ASSERT_EQ(engine->captured().height, 16);
     EXPECT_EQ(pixel(engine->captured(), 0, 0), (Rgba8{255, 0, 0, 255}));
 
@@ -159,13 +158,13 @@ TEST(FrameSystems, PresentStatusHoldsTheLastPresentsResult) {
     ScriptedDisplay display;
     display.presents.push_back(Error{"kms: /dev/dri/card0: page flip: No such device", ExitCode::Display});
     display.presents.push_back(Result<void>{});
-    PresentStatus status;
+    systems::PresentStatus status;
     systems::OutputPower power;
-    present_system(display, power, status);
+    systems::present_system(display, power, status);
     ASSERT_FALSE(status.result.ok());
     EXPECT_EQ(status.result.error().message, "kms: /dev/dri/card0: page flip: No such device");
     EXPECT_EQ(status.result.error().code, ExitCode::Display);
-    present_system(display, power, status);
+    systems::present_system(display, power, status);
     EXPECT_TRUE(status.result.ok()) << "a later present that works replaces the error";
     EXPECT_TRUE(display.presents.empty()) << "one present per run";
 }
@@ -176,14 +175,14 @@ TEST(FrameSystems, WhileOffOnlyTheBlackFrameIsPresentedAndTheStatusStaysGood) {
     ScriptedDisplay display;
     display.presents.push_back(Result<void>{});
     display.presents.push_back(Error{"scripted: presented while off", ExitCode::Display});
-    PresentStatus status{Error{"an old failure", ExitCode::Display}};
+    systems::PresentStatus status{Error{"an old failure", ExitCode::Display}};
     systems::OutputPower power{.on = false, .black_frame_pending = true};
-    present_system(display, power, status);
+    systems::present_system(display, power, status);
     EXPECT_TRUE(status.result.ok());
     EXPECT_FALSE(power.black_frame_pending);
     EXPECT_EQ(display.presents.size(), 1u) << "the black frame was presented";
     for (int i = 0; i < 3; ++i) {
-        present_system(display, power, status);
+        systems::present_system(display, power, status);
         EXPECT_TRUE(status.result.ok()) << "nothing presented, nothing failed";
     }
     EXPECT_EQ(display.presents.size(), 1u) << "no present while off";

@@ -28,7 +28,7 @@ struct Rig {
         test::ScopedEnv socket("NOTIFY_SOCKET", systemd.path());
         test::ScopedEnv watchdog("WATCHDOG_USEC", "4000");  // pings at most every millisecond
         world.insert_resource<systems::LiveTuning>(params::ParamLayers(params::Presets::load({}), {}));
-        world.insert_resource<PresentStatus>();
+        world.insert_resource<systems::PresentStatus>();
         auto added = add_service_plugin(world, schedule, std::make_unique<StopSignals>(),
                                         ServiceNotify::from_environment());
         EXPECT_TRUE(added.ok());
@@ -60,7 +60,7 @@ TEST(ServicePlugin, SighupAsksLiveTuningToReloadOnce) {
 
 TEST(ServicePlugin, TheWatchdogIsPingedOnlyAfterAPresentedFrameAndStoppingAtExit) {
     Rig rig;
-    auto& presented = rig.world.resource<PresentStatus>();
+    auto& presented = rig.world.resource<systems::PresentStatus>();
     presented.result = make_error(ExitCode::Display, "display: page flip failed");
     rig.schedule.run_stage(ecs::Stage::Present, rig.world);
     EXPECT_EQ(rig.systemd.received(), std::vector<std::string>{}) << "a failed present sends nothing";

@@ -1,4 +1,4 @@
-// Video walls (issue 20), with the real binary and the real clock: two `puddle` processes started seconds
+// Video walls, with the real binary and the real clock: two `puddle` processes started seconds
 // apart with wall.clock = "realtime" and the same --screenshot-at time write the same wave step, and their
 // pictures match after the warm-up; a third, one second later, shows a different picture (so the match
 // is not that of a flat field). Measured here (2 cores, llvmpipe, under load): mean channel difference

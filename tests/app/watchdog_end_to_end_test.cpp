@@ -1,6 +1,6 @@
 // The watchdog through a live edit: the real binary under a systemd-like notify socket is pointed, by
 // an edit of its config, at a panorama large enough that reading and converting it takes seconds. The
-// frames, and so the WATCHDOG=1 pings, must go on meanwhile (issue 15, fault 6: the old code held one
+// frames, and so the WATCHDOG=1 pings, must go on meanwhile (the old code held one
 // frame for the whole load, 12 to 17 s for an 8192x4096 sky, and systemd would have restarted it).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -187,7 +187,7 @@ TEST(WatchdogEndToEnd, AHeadlessOceanPingsAtItsOwnPaceInsteadOfQueueingFrames) {
     EXPECT_LT(longest, watchdog_seconds / 2) << "the longest gap between pings, in seconds\n" << puddle.log();
 }
 
-// The same for the camera (issue 15, fault 6: "camera opening"): a live edit switches the reflection to
+// The same for the camera ("camera opening"): a live edit switches the reflection to
 // a mock camera folder of large images, which takes a second or more to decode. The old code decoded it
 // inside one frame; now the worker does, and the pings go on.
 TEST(WatchdogEndToEnd, ALiveSwitchToALargeMockCameraKeepsThePingsWithinHalfTheWatchdogPeriod) {

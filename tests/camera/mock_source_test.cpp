@@ -124,7 +124,7 @@ TEST(MockSource, RenamedFolderIsAnUnplugAndComesBackWhenReopened) {
     EXPECT_EQ(std::to_integer<int>((**frame).data[0]), 30);
 }
 
-// A failed mock is retried only when this changes (systems/camera_system.cpp): it must change with every
+// A failed mock is retried only when this changes (systems/sky/camera_system.cpp): it must change with every
 // edit a user makes to the folder, and stay put while nothing does.
 TEST(MockSource, StampChangesWhenTheFolderOrItsFilesDoAndOnlyThen) {
     TempDir dir;

@@ -2,8 +2,8 @@
 // fake V4L2 driver (tests/camera) reports a format, size and row padding taken from the input and then
 // delivers frames of fuzzed length; V4l2Capture::open trusts what the driver wrote back and
 // V4l2Capture::poll drops short frames (minimum_payload), and the V4L2 source decodes MJPEG. Every frame
-// the source hands on must hold every byte the upload in systems/camera_environment.cpp reads, with 4:2:0
-// chroma at ceil(w/2) x ceil(h/2) samples (issue 15, item 8b), and rows no shorter than a packed row.
+// the source hands on must hold every byte the upload in systems/sky/camera_environment.cpp reads, with 4:2:0
+// chroma at ceil(w/2) x ceil(h/2) samples, and rows no shorter than a packed row.
 //
 // Input: fourcc choice, width, height, row padding (signed), buffers, EINTR period, then frames as
 // [length lo, length hi, flags, payload...].

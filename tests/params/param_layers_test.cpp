@@ -163,7 +163,7 @@ namespace puddle::params {
 namespace {
 
 // Remote values share the knob level (the last writer holds a parameter) and are saved in the same state
-// file, marked so that a restart restores them as Remote (issue 18).
+// file, marked so that a restart restores them as Remote.
 TEST(ParamLayersRemote, RemoteValuesAreTheKnobLevelAndSurviveTheStateFile) {
     ParamLayers layers(Presets::load({}), {});
     layers.set_remote(ParamId::rain_intensity, 0.7f);

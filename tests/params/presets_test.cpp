@@ -27,7 +27,7 @@ TEST(Presets, AtLeastFiveDocumentedLooksThatAllLoad) {
             << e.name << " starts with a comment saying what it is";
 }
 
-// The default ground is the paving (issue 21); the reference's checkerboard look is one preset away.
+// The default ground is the paving; the reference's checkerboard look is one preset away.
 TEST(Presets, ReferenceBringsBackTheCheckerboard) {
     EXPECT_FALSE(std::get<bool>(decl(ParamId::ground_checkerboard).default_value));
     const Presets p = Presets::load({});

@@ -1,4 +1,4 @@
-// What a state save must never destroy (review of issue 15, findings 1, 2 and 9): a file that could not be
+// What a state save must never destroy: a file that could not be
 // read and could not be set aside is never replaced; a state path that is a symbolic link is written
 // through and stays a link; a failed save leaves no temporary file behind.
 #include <grp.h>

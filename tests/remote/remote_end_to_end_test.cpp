@@ -1,4 +1,4 @@
-// The puddle binary against a real Mosquitto broker (issue 18, item 6): commands change the picture,
+// The puddle binary against a real Mosquitto broker: commands change the picture,
 // bad messages are refused with a reply, Home Assistant discovery matches the registry, screenshots are
 // JPEGs of the asked width, the client survives a broker restart and an outage, and the broker delivers
 // the last will when the process is killed. Skipped when mosquitto is not installed.

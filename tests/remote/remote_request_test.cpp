@@ -120,7 +120,7 @@ TEST(RemoteRequest, RetainedCommandsAreNeverAppliedAndAnEmptyPayloadIsCleared) {
     EXPECT_EQ(std::get<Command>(ok("puddle/a1/command", "next-preset")), Command::NextPreset);
 }
 
-// A wall's screens switch together at a time the message names (issue 20, "Changes in step").
+// A wall's screens switch together at a time the message names.
 TEST(RemoteRequest, ApplyAtIsTakenOffTheValueAsNanosecondsSinceTheEpoch) {
     const auto set = std::get<SetParam>(ok("puddle/all/set/rain.intensity", "0.75 apply_at=1764590402.5"));
     EXPECT_EQ(std::get<float>(set.value), 0.75f);

@@ -1,4 +1,4 @@
-// TLS and a password against a real Mosquitto (issue 18, item 6): a CA and a server certificate made by
+// TLS and a password against a real Mosquitto: a CA and a server certificate made by
 // openssl at test time, a broker config and password file written by the test.
 
 #include <fmt/format.h>

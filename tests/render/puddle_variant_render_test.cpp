@@ -4,7 +4,7 @@
 
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
-#include "systems/render_system.hpp"
+#include "systems/puddle/render_system.hpp"
 
 namespace puddle::test {
 namespace {

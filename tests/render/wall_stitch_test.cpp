@@ -1,4 +1,4 @@
-// Video walls (issue 20): the screens of a 2x2 wall, each a headless engine of its own rendering its tile
+// Video walls: the screens of a 2x2 wall, each a headless engine of its own rendering its tile
 // of the view at the same step, join into the picture of the whole view rendered by one engine, for every
 // scene, with bezels and with portrait screens; in mirror mode every screen shows the whole picture.
 // Tolerance: the golden images' (tests/systems/golden_test.cpp): mean channel difference at most 1.5 of

@@ -32,11 +32,11 @@
 #include "assets/image_io.hpp"
 #include "soak/process_sample.hpp"
 #include "soak/soak_plan.hpp"
-#include "systems/camera_system.hpp"
-#include "systems/puddle_plugin.hpp"
-#include "systems/scene_select.hpp"
-#include "systems/surface_system.hpp"
-#include "systems/wave_system.hpp"
+#include "systems/common/shown_look.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
+#include "systems/sky/camera_system.hpp"
+#include "systems/water/surface_system.hpp"
+#include "systems/water/wave_system.hpp"
 
 namespace puddle::soak {
 

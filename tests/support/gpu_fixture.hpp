@@ -17,7 +17,7 @@
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
 #include "platform/display.hpp"
-#include "systems/puddle_plugin.hpp"
+#include "systems/puddle/puddle_plugin.hpp"
 
 namespace glm {
 // Texels in failure messages as "(r, g, b, a)".

@@ -1,5 +1,5 @@
 #pragma once
-// Image bombs for the header-first tests (issue 15): a PNG whose header claims any size over a few bytes
+// Image bombs for the header-first tests: a PNG whose header claims any size over a few bytes
 // of data, and the process's peak memory, to show that such a file was refused without being decoded.
 
 #include <cstddef>

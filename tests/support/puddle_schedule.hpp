@@ -1,5 +1,5 @@
 #pragma once
-// What the puddle plugin registers (systems/puddle_plugin.hpp), line by line as Schedule::describe()
+// What the puddle plugin registers (systems/puddle/puddle_plugin.hpp), line by line as Schedule::describe()
 // says it: the plugin's own test pins it, and the engine test pins the binary's whole frame around it.
 // A change of order, of a run condition or of what a system reads and writes shows here first; update it
 // on purpose.
@@ -16,9 +16,7 @@ inline const std::vector<std::string> puddle_plugin_schedule = {
     "input/hold steps while off (reads OutputPower; writes FrameClock)",
     "input/wave rebuild (reads Params; writes Device, WaveField, Surface)",
     "input/environment reload (reads Params; writes Device, Environment, Ground, EnvironmentReload)",
-    "input/look switch (reads Params, Surface; writes Device, OceanRenderer, StreetRenderer, "
-    "AnalyticRipples, "
-    "GridDrops, ShownLook)",
+    "input/look switch (reads Params, Looks; writes Device, ShownLook)",
     "input/camera feed (reads Params, FrameTime; writes CameraFeed, Device, CameraEnvironment)",
     "simulate/begin step (writes FrameClock)",
     "simulate/drops if the wave field is in use (the world; reads Params, FrameClock; writes DropSlots, "

@@ -1,10 +1,10 @@
-// The adaptive scale in a running engine (systems/adaptive_scale.hpp): on llvmpipe a frame of the puddle
-// takes several milliseconds even at 480x270 (the 512x512 wave step alone is about 4 ms on the
+// The adaptive scale in a running engine (systems/output/adaptive_scale.hpp): on llvmpipe a frame of the
+// puddle takes several milliseconds even at 480x270 (the 512x512 wave step alone is about 4 ms on the
 // development machine), so a 240 fps target is missed at any scale and drives the scale down; a 1 fps
 // target is met at any scale and leaves it alone. The decision window is shortened to a quarter second
 // so the test takes a few seconds; the controller's timing is tested on synthetic loads in
 // tests/systems/scale_controller_test.cpp.
-#include "systems/adaptive_scale.hpp"
+#include "systems/output/adaptive_scale.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
-#include "systems/output_canvas.hpp"
+#include "systems/output/output_canvas.hpp"
 
 namespace puddle::test {
 namespace {

@@ -1,7 +1,7 @@
 // Analytic ripples (REFERENCE.md section 4): the closed form on the GPU equals the formula on the CPU,
 // the sources stay alive in the number asked for, and a ring travels at the speed the wave field's rings
 // do for the same parameters (the analytic model as an exact reference for the wave field).
-#include "systems/analytic_ripple_system.hpp"
+#include "systems/analytic_ripples/analytic_ripple_system.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The camera frame on the GPU (surfaceless EGL): YUV converted with the driver's matrix and range, the
 // external-sampler path through an EGLImage, and the cube the puddle reflects.
-#include "systems/camera_environment.hpp"
+#include "systems/sky/camera_environment.hpp"
 
 #include <gtest/gtest.h>
 
@@ -57,7 +57,7 @@ protected:
         auto r = systems::upload_camera_frame(device, image, env);
         EXPECT_TRUE(r) << (r ? "" : r.error().message);
         systems::camera_environment_system(device, engine->params(), sky(), env);
-        EXPECT_TRUE(env.has_frame);
+        EXPECT_NE(env.frame, systems::CameraFrame::none);
         return device.read_texture(env.colour);
     }
     const systems::Environment& sky() { return engine->world().resource<systems::Environment>(); }
@@ -108,7 +108,7 @@ TEST(CameraEnvironmentPipelines, AreBuiltOffTheFrameThreadAndTheCubemapStaysMean
         systems::camera_environment_system(device, engine->params(), sky, env);
     }
     ASSERT_NE(env.reflection(), nullptr) << "the camera never showed once the worker built its pipelines";
-    EXPECT_FALSE(env.failed);
+    EXPECT_FALSE(env.failed());
 }
 
 TEST_F(CameraEnvironmentTest, YuyvLimitedBt709ConvertsToTheExpectedColours) {
@@ -217,7 +217,7 @@ TEST_F(CameraEnvironmentTest, ExternalSamplerPathMatchesTheSource) {
                                       .mip_levels = 3})
                      .value();
     env.pending_import = &*image;
-    env.convert_due = true;
+    env.frame = systems::CameraFrame::uploaded;
     systems::camera_environment_system(device, engine->params(), sky(), env);
     const auto out = device.read_texture(env.colour);
     for (int i = 0; i < width * height; ++i)

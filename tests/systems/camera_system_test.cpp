@@ -1,7 +1,7 @@
 // The camera feed inside the running engine, against the fake V4L2 device: no device at start, a
 // device that appears, vanishes mid-stream and comes back, one whose open or close blocks. The display
 // never stops, the puddle reflects the cubemap while no camera streams, and nothing leaks.
-#include "systems/camera_system.hpp"
+#include "systems/sky/camera_system.hpp"
 
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>

@@ -7,9 +7,9 @@
 
 #include "assets/image_io.hpp"
 #include "support/test_support.hpp"
-#include "systems/environment_system.hpp"
 #include "systems/environment_test_support.hpp"
 #include "systems/render_test_support.hpp"
+#include "systems/sky/environment_system.hpp"
 
 namespace puddle::test {
 namespace {

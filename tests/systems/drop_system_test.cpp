@@ -1,6 +1,6 @@
-// Tests for systems/drop_system.hpp: seeded, reproducible drops; their strength and activation; the
+// Tests for systems/water/drop_system.hpp: seeded, reproducible drops; their strength and activation; the
 // live-drop list; and that drop entities are recycled, never accumulated.
-#include "systems/drop_system.hpp"
+#include "systems/water/drop_system.hpp"
 
 #include <gtest/gtest.h>
 
@@ -273,7 +273,7 @@ TEST(DropSystem, EntityCountNeverExceedsDropCountOverManyCycles) {
     EXPECT_LT(max_index, 16u);  // a despawned index is reused at once by the next spawn
 }
 
-// The simulation is a function of seed, parameters and step (issue 20): a screen that has run since step 0
+// The simulation is a function of seed, parameters and step: a screen that has run since step 0
 // and one that starts at step 100 see the same drops from there on, even when the seed and the intensity
 // changed in the middle of the drops' cycles. Drops used to keep the place and strength their cycle began
 // with, so the screen that ran through the change still had the old ones until each drop's next cycle.

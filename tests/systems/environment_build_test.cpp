@@ -1,8 +1,8 @@
-// The CPU half of a new environment (systems/environment_build.hpp): the storage chosen for HDR and LDR
+// The CPU half of a new environment (systems/sky/environment_build.hpp): the storage chosen for HDR and LDR
 // skies, the face size asked for or picked and capped by the GPU, a panorama shrunk to what the GPU takes
 // with the mip levels the GPU cannot make, the procedural sky's faces, and errors for a missing file or a
 // stop. The GPU half: environment_system_test.cpp.
-#include "systems/environment_build.hpp"
+#include "systems/sky/environment_build.hpp"
 
 #include <gtest/gtest.h>
 

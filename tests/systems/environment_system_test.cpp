@@ -1,7 +1,7 @@
 // The environment on the GPU: the face size and storage chosen for a sky, the forced RGBM fallback showing
 // the same sky, the real files of ../shared/assets loading and rendering, and changed images reloading at
 // run time while a bad one keeps what is shown. The panorama-to-cube conversion: equirect_to_cube_test.cpp.
-#include "systems/environment_system.hpp"
+#include "systems/sky/environment_system.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Tests for systems/frame_clock.hpp: the fixed-step accumulator and the double-precision sim time.
-#include "systems/frame_clock.hpp"
+// Tests for systems/clock/frame_clock.hpp: the fixed-step accumulator and the double-precision sim time.
+#include "systems/clock/frame_clock.hpp"
 
 #include <gtest/gtest.h>
 

@@ -56,7 +56,7 @@ TEST(Golden, HdrCityLightsInTheRain) {
                              90, golden_size));
 }
 
-// Scenes and drop models (issue 5), smaller: one picture each, also shown in docs/scenes.md. None of them
+// Scenes and drop models, smaller: one picture each, also shown in docs/scenes.md. None of them
 // needs the wave field to settle (they are functions of time), so a few frames suffice.
 constexpr glm::ivec2 scene_golden_size{320, 180};
 

@@ -1,6 +1,6 @@
 // Grid-sampled drops (REFERENCE.md section 5): no drop reaches past its 3x3 cells, so testing only those
 // nine loses nothing, and the rings come and go with the cycle.
-#include "systems/grid_drop_system.hpp"
+#include "systems/grid_drops/grid_drop_system.hpp"
 
 #include <gtest/gtest.h>
 

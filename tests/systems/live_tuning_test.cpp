@@ -1,5 +1,5 @@
 // The live-tuning system: config reloads and knob turns reaching Params, the delayed state save.
-#include "systems/live_tuning.hpp"
+#include "systems/tuning/live_tuning.hpp"
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/ringbuffer_sink.h>

@@ -1,6 +1,8 @@
-// A look chosen while the display runs is built off the frame thread (systems/look_switch.hpp,
+// A look chosen while the display runs is built off the frame thread (systems/common/look_switch.hpp,
 // gpu/pipeline_compiler.hpp): frames go on showing the old look while the worker has not built the new
 // one, and the first frame after it is ready shows the new look exactly as an engine started with it.
+#include "systems/common/look_switch.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -8,9 +10,10 @@
 #include "params/config_loader.hpp"
 #include "support/gated_worker_context.hpp"
 #include "support/test_support.hpp"
-#include "systems/ocean_system.hpp"
+#include "systems/common/looks.hpp"
+#include "systems/common/shown_look.hpp"
+#include "systems/ocean/ocean_system.hpp"
 #include "systems/render_test_support.hpp"
-#include "systems/scene_select.hpp"
 
 namespace puddle::test {
 namespace {
@@ -67,13 +70,43 @@ TEST(LookSwitch, ALookThatFailsToBuildIsNeverShown) {
     ASSERT_TRUE(context.ok()) << context.error().message;
     engine->device().start_background_compiles(std::move(context).value());
     // As if ocean.frag had not compiled on this GPU: the pipeline is marked failed.
-    engine->world().resource<systems::OceanRenderer>().pass.fail({},
-                                                                 {"test: ocean.frag does not compile here"});
+    engine->world().resource<systems::OceanRenderer>().pass.cache.fail(
+        {}, {"test: ocean.frag does not compile here"});
     const auto before = render_frames(*engine, 3);
     set(*engine, "scene.kind=ocean");
     const auto after = render_frames(*engine, 10);
     EXPECT_EQ(engine->world().resource<systems::ShownLook>().scene, systems::Scene::puddle);
     EXPECT_LT(compare_images(before, after, 32).fraction_over, 0.2) << "the puddle stays, not a black frame";
+}
+
+// The switch knows no look by name: it asks the chosen look's entry in Looks, every frame until the
+// entry is ready, and moves ShownLook then; a look with no entry (the puddle's pulse drops) is shown at once.
+TEST(LookSwitch, TheChosenLooksEntryIsAskedUntilItIsReady) {
+    auto engine = make_engine(make_params({"wave.resolution=64"}), render_test_size);
+    ASSERT_TRUE(engine);
+    int asked = 0, prepared = 0;
+    systems::Looks looks;
+    looks.entries.push_back({.scene = systems::Scene::street,
+                             .prepare = [&](gpu::Device&) { return ++prepared, Result<void>{}; },
+                             .request = [&](gpu::Device&) { return ++asked >= 3; }});
+    systems::ShownLook shown;
+    params::Params& params = engine->params();
+    params.set(params::ParamId::scene_kind, std::string("street"), params::ParamSource::CommandLine);
+    systems::look_switch_system(engine->device(), params, looks, shown);
+    systems::look_switch_system(engine->device(), params, looks, shown);
+    EXPECT_EQ(shown.scene, systems::Scene::puddle) << "not ready after two asks";
+    systems::look_switch_system(engine->device(), params, looks, shown);
+    EXPECT_EQ(shown.scene, systems::Scene::street);
+    systems::look_switch_system(engine->device(), params, looks, shown);
+    EXPECT_EQ(asked, 3) << "a shown look is not asked again";
+    EXPECT_EQ(prepared, 0) << "the switch builds off the frame thread, never with prepare";
+    ASSERT_TRUE(systems::prepare_chosen_look(engine->device(), looks, shown).ok());
+    EXPECT_EQ(prepared, 1);
+
+    params.set(params::ParamId::scene_kind, std::string("puddle"), params::ParamSource::CommandLine);
+    systems::look_switch_system(engine->device(), params, looks, shown);
+    EXPECT_EQ(shown.scene, systems::Scene::puddle) << "no entry: nothing to build";
+    EXPECT_EQ(asked, 3);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The ocean scene (systems/ocean_system.hpp, REFERENCE.md section 2): each parameter moves the sea the
+// The ocean scene (systems/ocean/ocean_system.hpp, REFERENCE.md section 2): each parameter moves the sea the
 // way its name says, and the camera puts the horizon where a pinhole camera would.
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// Tests for systems/puddle_plugin.hpp: the plugin alone in a world (a Device, Params and RenderTarget, as
-// its header asks, and nothing of the engine's) registers its systems with their stages and run
-// conditions in the order written there, builds the resources its systems read, and stops with the
-// asset's error when the sky does not load.
-#include "systems/puddle_plugin.hpp"
+// Tests for systems/puddle/puddle_plugin.hpp: the plugin alone in a world (a Device, Params and RenderTarget,
+// as its header asks, and nothing of the engine's) registers its systems with their stages and run conditions
+// in the order written there, builds the resources its systems read, and stops with the asset's error when
+// the sky does not load.
+#include "systems/puddle/puddle_plugin.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +13,10 @@
 #include "params/param_store.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/puddle_schedule.hpp"
-#include "systems/render_system.hpp"
-#include "systems/scene_select.hpp"
-#include "systems/surface_system.hpp"
-#include "systems/wave_system.hpp"
+#include "systems/common/shown_look.hpp"
+#include "systems/puddle/render_system.hpp"
+#include "systems/water/surface_system.hpp"
+#include "systems/water/wave_system.hpp"
 
 namespace puddle::systems {
 namespace {

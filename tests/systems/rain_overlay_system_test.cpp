@@ -1,5 +1,5 @@
-// The rain overlay (systems/rain_overlay_system.hpp): streak pixels grow with the density, vanish at zero
-// opacity or density, and take the rain colour.
+// The rain overlay (systems/rain_overlay/rain_overlay_system.hpp): streak pixels grow with the density,
+// vanish at zero opacity or density, and take the rain colour.
 #include <gtest/gtest.h>
 
 #include <cmath>

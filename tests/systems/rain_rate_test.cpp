@@ -1,6 +1,6 @@
-// How hard it rains and how many drops that is (systems/rain_rate.hpp), and the capillary step's factors
-// (systems/capillary_step.hpp).
-#include "systems/rain_rate.hpp"
+// How hard it rains and how many drops that is (systems/water/rain_rate.hpp), and the capillary step's
+// factors (systems/water/capillary_step.hpp).
+#include "systems/water/rain_rate.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "params/param_store.hpp"
-#include "systems/capillary_step.hpp"
+#include "systems/water/capillary_step.hpp"
 
 namespace puddle::systems {
 namespace {

@@ -1,7 +1,7 @@
 // The adaptive scale's controller under synthetic loads: a frame costs fixed + per_pixel * scale^2 seconds
 // (the scaled canvas shades scale^2 of the pixels), and the clock advances by each frame's time, so these
 // tests run in microseconds and repeat exactly.
-#include "systems/scale_controller.hpp"
+#include "systems/output/scale_controller.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,12 @@
-// Choosing the look (systems/scene_select.hpp): a scene or drop model changed between frames shows on the
-// next frame, the same as an engine started with it.
-#include "systems/scene_select.hpp"
-
+// Choosing the look (systems/common/shown_look.hpp): a scene or drop model changed between frames shows on
+// the next frame, the same as an engine started with it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
 #include "support/test_support.hpp"
+#include "systems/common/shown_look.hpp"
 #include "systems/render_test_support.hpp"
 
 namespace puddle::test {

@@ -1,7 +1,7 @@
 // The schedule layer with an injected wall clock and TZ set: windows past midnight, weekdays, both
 // daylight-saving changes, a sunset entry, overlapping entries (the later wins), a knob override that
 // holds until the next transition, and --print-config naming the entry.
-#include "systems/schedule_system.hpp"
+#include "systems/tuning/schedule_system.hpp"
 
 #include <gtest/gtest.h>
 

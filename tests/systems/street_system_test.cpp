@@ -1,5 +1,5 @@
-// The rainy street (systems/street_system.hpp, REFERENCE.md section 3): the horizon splits a smooth sky
-// from the puddled ground where street.horizon puts it, and ripples brighten the puddles.
+// The rainy street (systems/street/street_system.hpp, REFERENCE.md section 3): the horizon splits a smooth
+// sky from the puddled ground where street.horizon puts it, and ripples brighten the puddles.
 #include <gtest/gtest.h>
 
 #include <cmath>

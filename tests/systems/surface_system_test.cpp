@@ -1,8 +1,8 @@
-// The surface pass (systems/surface_system.hpp): each surface texel holds the field's height there and its
-// central differences one texel apart (hL - hR, hD - hU), clamped at the edges (the reference's field)
-// or wrapped around them (a capillary field, which repeats), as surface.frag says and the render pass
-// relies on. Checked texel by texel against the field read back from the GPU.
-#include "systems/surface_system.hpp"
+// The surface pass (systems/water/surface_system.hpp): each surface texel holds the field's height there and
+// its central differences one texel apart (hL - hR, hD - hU), clamped at the edges (the reference's field) or
+// wrapped around them (a capillary field, which repeats), as surface.frag says and the render pass relies on.
+// Checked texel by texel against the field read back from the GPU.
+#include "systems/water/surface_system.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Tests for systems/synced_changes.hpp: with the realtime clock, a config edit that two screens of a wall
-// read at different moments is applied by both at the same step, the step of the next change boundary.
-#include "systems/synced_changes.hpp"
+// Tests for systems/tuning/synced_changes.hpp: with the realtime clock, a config edit that two screens of a
+// wall read at different moments is applied by both at the same step, the step of the next change boundary.
+#include "systems/tuning/synced_changes.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// A display that runs for years never jumps (issue 15, fault 9): the looks that are functions of time
+// A display that runs for years never jumps: the looks that are functions of time
 // (ocean, street, rain overlay, grid drops) render frames on both sides of every period the old code
 // wrapped time at, and after 10^8 s of uptime, and those frames must differ about as much as two frames
 // the same time apart early in the run. Shaders used to get time as float(fmod(seconds, 4096)): each
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "support/test_support.hpp"
-#include "systems/frame_clock.hpp"
+#include "systems/clock/frame_clock.hpp"
 #include "systems/render_test_support.hpp"
 
 namespace puddle::test {

@@ -1,6 +1,6 @@
-// Tests for systems/wall_clock.hpp: wave steps from integer nanoseconds, the change boundary, the
+// Tests for systems/clock/wall_clock.hpp: wave steps from integer nanoseconds, the change boundary, the
 // warm-up's residual and the kernel's clock status.
-#include "systems/wall_clock.hpp"
+#include "systems/clock/wall_clock.hpp"
 
 #include <gtest/gtest.h>
 

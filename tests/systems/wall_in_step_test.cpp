@@ -1,4 +1,4 @@
-// Screens of a wall in step (issue 20, "In step" and "Clock faults"): two headless engines on the realtime
+// Screens of a wall in step: two headless engines on the realtime
 // clock (injected, so the test runs in milliseconds of wall time), started seconds apart and framing at
 // different moments of the 60 Hz period, show the same height field and the same frame at the same wall
 // time once the later one has warmed up; a clock step back on one of them re-syncs it to the same picture.
@@ -13,9 +13,9 @@
 
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
-#include "systems/wall_clock.hpp"
-#include "systems/wall_steps.hpp"
-#include "systems/wave_system.hpp"
+#include "systems/clock/wall_clock.hpp"
+#include "systems/clock/wall_steps.hpp"
+#include "systems/water/wave_system.hpp"
 
 namespace puddle::test {
 namespace {
@@ -27,8 +27,8 @@ constexpr std::int64_t frame_ns = 16'666'667;                       // 60 Hz
 constexpr glm::ivec2 tile_size{160, 90};
 
 // Residual allowed between the screens' height fields, relative to the field's largest height. The
-// warm-up leaves damping^(steps/2) = 1.1e-4 of the difference at the start (systems/wall_clock.hpp), times
-// at most 1/sin(acos(sqrt(damping))) = 8.2 for the slowest mode: 9.5e-4. Measured: printed by the test.
+// warm-up leaves damping^(steps/2) = 1.1e-4 of the difference at the start (systems/clock/wall_clock.hpp),
+// times at most 1/sin(acos(sqrt(damping))) = 8.2 for the slowest mode: 9.5e-4. Measured: printed by the test.
 constexpr double height_tolerance = 1e-3;
 // Pixels: where a residual of 1e-4 meets a steep highlight a channel may move by a few levels of 255 (up to
 // 10 measured), so the frames must agree far inside the golden images' tolerance (mean 1.5, 1% of pixels

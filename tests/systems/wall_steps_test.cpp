@@ -1,7 +1,7 @@
-// Tests for systems/wall_steps.hpp: the frame clock driven by an injected wall clock. A screen joins by
+// Tests for systems/clock/wall_steps.hpp: the frame clock driven by an injected wall clock. A screen joins by
 // a bounded warm-up, then simulates the step its vblank falls in; clock steps (an NTP correction) either
 // way are re-synced or caught up within a bounded number of frames, never by thousands of steps in one.
-#include "systems/wall_steps.hpp"
+#include "systems/clock/wall_steps.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -195,7 +195,7 @@ TEST(WallSteps, LooksWithoutTheWaveFieldJoinAtOnce) {
     EXPECT_EQ(s.clock.steps_due, s.params.get<ParamId::wall_catch_up_steps>());
 }
 
-// A pending synced change holds back its step until it is applied (systems/synced_changes.hpp).
+// A pending synced change holds back its step until it is applied (systems/tuning/synced_changes.hpp).
 TEST(WallSteps, AChangesStepWaitsForTheChange) {
     Screen s;
     s.frame();

@@ -8,7 +8,7 @@
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
 #include "systems/environment_test_support.hpp"
-#include "systems/surface_system.hpp"
+#include "systems/water/surface_system.hpp"
 #include "systems/wave_test_support.hpp"
 
 namespace puddle::test {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "support/gpu_fixture.hpp"
-#include "systems/surface_system.hpp"
+#include "systems/water/surface_system.hpp"
 #include "systems/wave_test_support.hpp"
 
 namespace puddle::test {

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "app/engine.hpp"
-#include "systems/drop_system.hpp"
-#include "systems/wave_system.hpp"
+#include "systems/water/drop_system.hpp"
+#include "systems/water/wave_system.hpp"
 
 namespace puddle::test {
 

@@ -1,0 +1,94 @@
+#include "systems/street/street_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/shader_hash.hpp"
+#include "render/shader_phase.hpp"
+
+namespace puddle::systems {
+
+using params::ParamId;
+
+namespace {
+gpu::PipelineDesc street_desc() {
+    return {.label = "street", .vertex = "view_window.vert", .fragment = "street.frag"};
+}
+
+// Source i of a kind: its period and phase offset from integer hashes of (i, salt, seed), as street.frag
+// drew them, then its repeat and age at `seconds`.
+void set_sources(const StreetSourceKind& kind, std::uint32_t seed, double seconds,
+                 std::array<float, street_max_sources>& ages, std::array<int, street_max_sources>& repeats) {
+    for (std::uint32_t i = 0; i < street_max_sources; ++i) {
+        const double u = render::shader_unit_float(render::shader_hash3(i, kind.salt, seed));
+        const double period = kind.min_period + (kind.max_period - kind.min_period) * u;
+        const double offset = render::shader_unit_float(render::shader_hash3(i, kind.salt + 1u, seed));
+        const render::Repetition r = render::repetition_at(seconds, period, offset);
+        ages[i] = r.age;
+        repeats[i] = static_cast<int>(r.index);  // the shader takes the bits back as a uint
+    }
+}
+}  // namespace
+
+StreetTime street_time(const params::Params& params, double seconds) {
+    constexpr double two_pi = 2.0 * std::numbers::pi;
+    StreetTime st;
+    // sin(1.7 t + 3) * sin(2.3 t): the constant 3 rides in the phase, reduced with it.
+    st.lightning_phase = {render::periodic_phase(seconds + 3.0 / 1.7, 1.7, two_pi),
+                          render::periodic_phase(seconds, 2.3, two_pi)};
+    // The clouds drift street.cloud_drift screens per second; the fbm's octave i samples 3 * 2.03^i
+    // cells per screen.
+    const double cloud_drift = params.get<ParamId::street_cloud_drift>();
+    double cells_per_screen = 3.0;
+    for (std::size_t i = 0; i < st.cloud_shift.size(); ++i, cells_per_screen *= 2.03) {
+        const render::LatticeShift shift = render::lattice_shift(seconds, cloud_drift * cells_per_screen);
+        st.cloud_shift[i] = shift.fraction;
+        st.cloud_cells[i] = shift.cells;
+    }
+    // The ground drifts street.ground_drift units per second under noises of 4, 8 and 40 cells per unit.
+    const double drift = params.get<ParamId::street_ground_drift>();
+    constexpr std::array<double, 3> ground_cells_per_unit{4.0, 8.0, 40.0};
+    for (int i = 0; i < 3; ++i) {
+        const render::LatticeShift shift =
+            render::lattice_shift(seconds, ground_cells_per_unit[static_cast<std::size_t>(i)] * drift);
+        st.ground_shift[i] = shift.fraction;
+        st.ground_cells[static_cast<std::size_t>(i)] = shift.cells;
+    }
+    const auto seed = static_cast<std::uint32_t>(params.get<ParamId::rain_seed>());
+    set_sources(street_ripple_kind, seed, seconds, st.ripple_age, st.ripple_repeat);
+    set_sources(street_splash_kind, seed, seconds, st.splash_age, st.splash_repeat);
+    return st;
+}
+
+StreetRenderer::StreetRenderer() : pass(street_desc()) {}
+
+void street_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
+                   StreetRenderer& street, const RenderTarget& target) {
+    street.pass.draw(device, params, target, gpu::LoadOp::DontCare, [&](gpu::RenderPass& pass) {
+        const StreetTime st = street_time(params, clock.sim_time);
+        pass.set("u_aspect", target.view.view_aspect(target.target.size))
+            .set("u_lightning_phase", st.lightning_phase)
+            .set("u_cloud_shift", std::span<const float>(st.cloud_shift))
+            .set("u_cloud_cells", std::span<const int>(st.cloud_cells))
+            .set("u_noise_shift", st.ground_shift)
+            .set("u_noise_cells", std::span<const int>(st.ground_cells))
+            .set("u_ripple_age", std::span<const float>(st.ripple_age))
+            .set("u_ripple_repeat", std::span<const int>(st.ripple_repeat))
+            .set("u_splash_age", std::span<const float>(st.splash_age))
+            .set("u_splash_repeat", std::span<const int>(st.splash_repeat));
+    });
+}
+
+void add_street_plugin(ecs::World& world, ecs::Schedule& schedule) {
+    auto& street = world.insert_resource<StreetRenderer>();
+    world.resource<Looks>().entries.push_back(
+        {.scene = Scene::street,
+         .prepare = [&street](gpu::Device& d) { return street.pass.prepare(d); },
+         .request = [&street](gpu::Device& d) { return street.pass.request(d); }});
+    schedule.add(ecs::Stage::Render, "street", street_system)
+        .run_if(look_is(Scene::street))
+        .run_if(output_on());
+}
+
+}  // namespace puddle::systems
