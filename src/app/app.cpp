@@ -71,12 +71,12 @@ void restore_saved_state(systems::LiveTuning& tuning, bool read_only) {
     auto copy = tuning.state->set_aside();
     if (!copy) {  // the store now refuses to save: a file it could not keep is never replaced
         spdlog::warn("{}", copy.error().message);
-        tuning.last_save_problem = copy.error().message;  // said once, not again at every knob save
+        tuning.save_refused(copy.error().message);
         return;
     }
     spdlog::warn("state: the original is kept as {}; {} will hold the valid values", *copy,
                  tuning.state->path());
-    tuning.state_dirty = true;  // saved on the first frame
+    tuning.save_soon();
 }
 
 }  // namespace

@@ -22,32 +22,26 @@ void publish_all(remote::MqttClient& client, std::vector<remote::Outbound> messa
     for (remote::Outbound& m : messages) client.publish(std::move(m.topic), std::move(m.payload), m.retain);
 }
 
-Result<void> select_preset(systems::LiveTuning& t, const std::string& name, const char* how) {
-    if (auto r = t.layers.select_preset(name); !r) return r;
-    spdlog::info("preset: {} ({})", name.empty() ? "the config's" : name, how);
-    t.layers_changed = true;
-    t.change_reason = "remote";
-    t.state_dirty = true;
-    t.last_knob_change = t.last_step;
+// A preset the remote asks for is checked here, so a name that does not load is answered on the error
+// topic; live tuning switches to it.
+Result<void> ask_for_preset(const systems::LiveTuning& t, systems::TuningInbox& inbox,
+                            const std::string& name, std::optional<std::int64_t> apply_at_ns) {
+    if (!name.empty())
+        if (auto preset = t.layers.presets().get(name); !preset) return preset.error();
+    inbox.push(systems::SelectPreset{.name = name, .source = "remote", .apply_at_ns = apply_at_ns});
     return {};
 }
 
-Result<void> apply(RemoteControl& r, systems::LiveTuning& t, systems::FrameCapture& capture,
-                   const remote::Request& request) {
+Result<void> apply(RemoteControl& r, const systems::LiveTuning& t, systems::TuningInbox& inbox,
+                   systems::FrameCapture& capture, const remote::Request& request) {
     using remote::Command;
     if (const auto* set = std::get_if<remote::SetParam>(&request)) {
-        t.layers.set_remote(set->id, set->value);
-        if (set->apply_at_ns) t.apply_at_ns = set->apply_at_ns;  // wall.clock = "realtime" only reads it
-        t.layers_changed = true;
-        t.change_reason = "remote";
-        t.state_dirty = true;
-        t.last_knob_change = t.last_step;
+        inbox.push(
+            systems::SetRemoteValue{.id = set->id, .value = set->value, .apply_at_ns = set->apply_at_ns});
         return {};
     }
-    if (const auto* preset = std::get_if<remote::SelectPreset>(&request)) {
-        if (preset->apply_at_ns) t.apply_at_ns = preset->apply_at_ns;
-        return select_preset(t, preset->name, "remote");
-    }
+    if (const auto* preset = std::get_if<remote::SelectPreset>(&request))
+        return ask_for_preset(t, inbox, preset->name, preset->apply_at_ns);
     if (std::holds_alternative<remote::HomeAssistantOnline>(request)) {
         r.discovery_due = true;
         return {};
@@ -57,19 +51,19 @@ Result<void> apply(RemoteControl& r, systems::LiveTuning& t, systems::FrameCaptu
     switch (*command) {
         case Command::NextPreset:
         case Command::PreviousPreset:
-            return select_preset(
-                t, t.layers.presets().step(t.layers.preset_name(), *command == Command::NextPreset ? 1 : -1),
-                "remote");
+            return ask_for_preset(
+                t, inbox,
+                t.layers.presets().step(t.layers.preset_name(), *command == Command::NextPreset ? 1 : -1),
+                std::nullopt);
         case Command::Save:
-            t.state_dirty = true;
-            systems::start_state_save(t);
+            inbox.push(systems::SaveState{});
             return {};
         case Command::Screenshot:
             capture.requested = true;  // read back before the next present (systems::capture_system)
             r.screenshot_wanted = true;
             return {};
         case Command::Reload:
-            t.reload_requested = true;
+            inbox.push(systems::ReloadConfig{"remote"});
             return {};
     }
     return {};
@@ -111,7 +105,8 @@ void RemoteControl::reply_error(const std::string& topic, const std::string& mes
     client->publish(settings.prefix + "/error", remote::error_document(topic, message), false);
 }
 
-void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, systems::FrameCapture& capture) {
+void remote_commands_system(RemoteControl& r, const systems::LiveTuning& tuning, systems::TuningInbox& inbox,
+                            systems::FrameCapture& capture) {
     r.client->drain(r.inbox);
     if (const std::uint64_t dropped = r.client->take_dropped())
         r.reply_error(
@@ -132,7 +127,7 @@ void remote_commands_system(RemoteControl& r, systems::LiveTuning& tuning, syste
                                          safe_quote(m.topic), safe_quote(m.payload), safe_quote(m.topic)));
             continue;
         }
-        if (auto applied = apply(r, tuning, capture, *request); !applied)
+        if (auto applied = apply(r, tuning, inbox, capture, *request); !applied)
             r.reply_error(m.topic, fmt::format("remote: {}: {}", m.topic, applied.error().message));
     }
     r.inbox.clear();
@@ -205,6 +200,7 @@ Result<void> add_remote_plugin(ecs::World& world, ecs::Schedule& schedule) {
     }
     auto client = remote::MqttClient::start(std::move(options));
     if (!client) return client.error();
+    if (!world.try_resource<systems::TuningInbox>()) world.insert_resource<systems::TuningInbox>();
     auto& r = world.insert_resource<RemoteControl>(std::move(*settings));
     r.client = std::move(*client);
     r.clear_only = clear_only;

@@ -1,11 +1,11 @@
 #pragma once
 // Remote control over MQTT as systems; the client, its topics and Home Assistant discovery
 // are src/remote's, this file wires them to the frame:
-//   input:   remote commands  takes what the network thread received (never waits for it) and applies
-//                             it to live tuning's layers: a parameter (source Remote, saved with the
-//                             knob state), a preset, a command; a bad message is one warning and a reply
-//                             on <prefix>/error, nothing applied; a retained command is never applied
-//                             (one warning per topic)
+//   input:   remote commands  takes what the network thread received (never waits for it) and asks
+//                             live tuning (its TuningInbox) for it: a parameter (source Remote, saved
+//                             with the knob state), a preset, a command; a bad message (or a preset that
+//                             does not load) is one warning and a reply on <prefix>/error, nothing
+//                             asked; a retained command is never applied (one warning per topic)
 //   present: remote publish   after the present: the screenshot of the frame just shown (read back by
 //                             the capture system before it), the state when Params changed or after a
 //                             (re)connect, health every remote.health_interval seconds, discovery
@@ -57,8 +57,8 @@ struct RemoteControl {
     void reply_error(const std::string& topic, const std::string& message);
 };
 
-void remote_commands_system(RemoteControl& remote, systems::LiveTuning& tuning,
-                            systems::FrameCapture& capture);
+void remote_commands_system(RemoteControl& remote, const systems::LiveTuning& tuning,
+                            systems::TuningInbox& inbox, systems::FrameCapture& capture);
 void remote_publish_system(RemoteControl& remote, const params::Params& params,
                            const systems::LiveTuning& tuning, systems::FrameCapture& capture);
 

@@ -4,8 +4,8 @@
 
 namespace puddle::app {
 
-void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning) {
-    if (signals.take_reload()) tuning.reload_requested = true;
+void reload_signal_system(StopSignals& signals, systems::TuningInbox& inbox) {
+    if (signals.take_reload()) inbox.push(systems::ReloadConfig{"SIGHUP"});
 }
 
 void watchdog_ping_system(ServiceNotify& service, const systems::PresentStatus& presented) {
@@ -20,6 +20,7 @@ Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule,
                                 std::unique_ptr<StopSignals> signals, ServiceNotify service) {
     world.adopt_resource<StopSignals>(std::move(signals));
     world.insert_resource<ServiceNotify>(std::move(service));
+    if (!world.try_resource<systems::TuningInbox>()) world.insert_resource<systems::TuningInbox>();
     using ecs::Stage;
     schedule.add(Stage::Input, "reload signal", reload_signal_system);
     schedule.add(Stage::Present, "watchdog ping", watchdog_ping_system);

@@ -14,17 +14,17 @@
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
 #include "systems/display/display_plugin.hpp"
-#include "systems/tuning/live_tuning.hpp"
+#include "systems/tuning/tuning_request.hpp"
 #include "util/result.hpp"
 
 namespace puddle::app {
 
-void reload_signal_system(StopSignals& signals, systems::LiveTuning& tuning);
+void reload_signal_system(StopSignals& signals, systems::TuningInbox& inbox);
 void watchdog_ping_system(ServiceNotify& service, const systems::PresentStatus& presented);
 void service_stopping_system(ServiceNotify& service);
 
-// Inserts `signals` and `service` as resources and registers the systems above. Live tuning
-// (systems::add_live_tuning) must be installed too: the reload signal goes to it.
+// Inserts `signals`, `service` and (when absent) the TuningInbox as resources and registers the systems
+// above. The reload signal is a request in the inbox, which live tuning (systems::add_live_tuning) acts on.
 Result<void> add_service_plugin(ecs::World& world, ecs::Schedule& schedule,
                                 std::unique_ptr<StopSignals> signals, ServiceNotify service);
 

@@ -25,7 +25,9 @@ struct FullscreenPass {
         return cache.ensure(device, {}, [this] { return desc; });
     }
     // Has it built off the frame thread; true once ready.
-    bool request(gpu::Device& device) { return cache.request(device, {}, [this] { return desc; }) != nullptr; }
+    bool request(gpu::Device& device) {
+        return cache.request(device, {}, [this] { return desc; }) != nullptr;
+    }
 
     // Draws the pass into `target` once its pipeline is built (nothing until then): sets the pipeline,
     // the parameter uniforms and u_view_window, then `set_uniforms(pass)` sets the pass's own.

@@ -6,36 +6,86 @@
 #include <chrono>
 #include <cmath>
 #include <thread>
+#include <utility>
+#include <variant>
 
 namespace puddle::systems {
 
 using params::ParamId;
 using params::ParamKind;
 
+// The one way into LiveTuning's internals: this file's functions are live tuning.
+struct LiveTuningAccess {
+    static LiveTuning::Internals& of(LiveTuning& t) { return t.in_; }
+    static const LiveTuning::Internals& of(const LiveTuning& t) { return t.in_; }
+};
+
 namespace {
+
+auto& in(LiveTuning& t) {
+    return LiveTuningAccess::of(t);
+}
+const auto& in(const LiveTuning& t) {
+    return LiveTuningAccess::of(t);
+}
+
+// A change of a layer from `reason`, applied by this step (or, on a wall, at the wall's step), and saved
+// a delay later.
+void layer_changed(LiveTuning& t, const char* reason, double now) {
+    in(t).layers_changed = true;
+    in(t).change_reason = reason;
+    in(t).state_dirty = true;
+    in(t).last_knob_change = now;
+}
+
+// Acts on one request from the inbox; true when it asks for a config reload.
+bool act_on(LiveTuning& t, const TuningRequest& request, double now) {
+    if (const auto* set = std::get_if<SetRemoteValue>(&request)) {
+        t.layers.set_remote(set->id, set->value);
+        if (set->apply_at_ns) in(t).apply_at_ns = set->apply_at_ns;  // wall.clock = "realtime" only reads it
+        layer_changed(t, "remote", now);
+        return false;
+    }
+    if (const auto* preset = std::get_if<SelectPreset>(&request)) {
+        if (auto r = t.layers.select_preset(preset->name); !r) {
+            spdlog::warn("{} (preset not changed)", r.error().message);
+            return false;
+        }
+        spdlog::info("preset: {} ({})", preset->name.empty() ? "the config's" : preset->name, preset->source);
+        if (preset->apply_at_ns) in(t).apply_at_ns = preset->apply_at_ns;
+        layer_changed(t, preset->source, now);
+        return false;
+    }
+    if (std::holds_alternative<SaveState>(request)) {
+        in(t).state_dirty = true;
+        start_state_save(t);
+        return false;
+    }
+    return std::holds_alternative<ReloadConfig>(request);
+}
 
 // A refusal or a full disk fails every save alike: one line, not one per knob turn. What a failed save
 // did not write is still to be saved: it is tried again a delay later, and at exit.
 void report_save(LiveTuning& t, const Result<void>& saved, double now) {
     if (!saved) {
-        if (saved.error().message != t.last_save_problem) spdlog::warn("{}", saved.error().message);
-        t.last_save_problem = saved.error().message;
-        t.state_dirty = true;
-        t.last_knob_change = std::max(t.last_knob_change, now);
+        if (saved.error().message != in(t).last_save_problem) spdlog::warn("{}", saved.error().message);
+        in(t).last_save_problem = saved.error().message;
+        in(t).state_dirty = true;
+        in(t).last_knob_change = std::max(in(t).last_knob_change, now);
     } else {
-        t.last_save_problem.clear();
+        in(t).last_save_problem.clear();
         spdlog::info("state: knob values saved to {}", t.state->path());
     }
 }
 
 void make_knobs(LiveTuning& t) {
-    t.knobs.clear();
+    in(t).knobs.clear();
     const auto& specs = t.layers.config().knobs;
     if (specs.empty()) return;
     if (!t.gpio) t.gpio = io::make_gpiod_backend();
-    t.knobs.reserve(specs.size());
-    for (const auto& spec : specs) t.knobs.emplace_back(spec);
-    t.actions.reserve(64 * specs.size());
+    in(t).knobs.reserve(specs.size());
+    for (const auto& spec : specs) in(t).knobs.emplace_back(spec);
+    in(t).actions.reserve(64 * specs.size());
     spdlog::info("gpio: {} knob(s) on {}", specs.size(), t.gpio->name());
 }
 
@@ -108,16 +158,16 @@ void apply_action(LiveTuning& t, const io::KnobAction& a, const params::Params& 
                     break;
                 }
                 case params::ButtonAction::SaveState:
-                    t.state_dirty = true;
+                    in(t).state_dirty = true;
                     start_state_save(t);
                     return;
             }
             break;
     }
-    t.layers_changed = true;
-    t.change_reason = "knob";
-    t.state_dirty = true;
-    t.last_knob_change = now;
+    in(t).layers_changed = true;
+    in(t).change_reason = "knob";
+    in(t).state_dirty = true;
+    in(t).last_knob_change = now;
 }
 
 }  // namespace
@@ -130,7 +180,7 @@ void start_live_tuning(LiveTuning& t) {
         spdlog::warn("{}; edits apply on SIGHUP only", watcher.error().message);
         return;
     }
-    t.watcher = std::move(*watcher);
+    in(t).watcher = std::move(*watcher);
     spdlog::info("config: watching {} for changes (or send SIGHUP)", t.config_path);
 }
 
@@ -148,17 +198,22 @@ bool reload_config(LiveTuning& t) {
         return false;
     }
     if (knobs_changed) make_knobs(t);
-    ++t.config_generation;
-    t.layers_changed = true;
-    t.change_reason = "config: reloaded";
+    ++in(t).config_generation;
+    in(t).layers_changed = true;
+    in(t).change_reason = "config: reloaded";
     return true;
 }
 
-void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
-    t.last_step = now;
-    bool reload = std::exchange(t.reload_requested, false);
-    if (t.watcher) {
-        switch (t.watcher->poll()) {
+void live_tuning_step(TuningInbox& inbox, LiveTuning& t, params::Params& params, double now) {
+    in(t).last_step = now;
+    bool reload = false;
+    for (const TuningRequest& request : inbox.requests) reload |= act_on(t, request, now);
+    inbox.requests.clear();
+    if (const std::uint64_t dropped = std::exchange(inbox.dropped, 0))
+        spdlog::warn("tuning: {} change(s) dropped: more than {} asked in one frame", dropped,
+                     TuningInbox::capacity);
+    if (in(t).watcher) {
+        switch (in(t).watcher->poll()) {
             case params::ConfigWatcher::Change::Written:
                 reload = true;
                 break;
@@ -172,21 +227,21 @@ void live_tuning_step(LiveTuning& t, params::Params& params, double now) {
     }
     if (reload) reload_config(t);
 
-    if (t.gpio && !t.knobs.empty()) {
+    if (t.gpio && !in(t).knobs.empty()) {
         t.gpio->poll(now);
-        t.actions.clear();
-        for (io::Knob& k : t.knobs) k.update(*t.gpio, now, t.actions, t.gone_chips);
-        for (const io::KnobAction& a : t.actions) apply_action(t, a, params, now);
-        t.actions.clear();
+        in(t).actions.clear();
+        for (io::Knob& k : in(t).knobs) k.update(*t.gpio, now, in(t).actions, in(t).gone_chips);
+        for (const io::KnobAction& a : in(t).actions) apply_action(t, a, params, now);
+        in(t).actions.clear();
     }
-    if (auto saved = t.saver ? t.saver->take() : std::nullopt) report_save(t, *saved, now);
-    if (t.state_dirty && t.state && now - t.last_knob_change >= LiveTuning::save_delay_seconds)
+    if (auto saved = in(t).saver ? in(t).saver->take() : std::nullopt) report_save(t, *saved, now);
+    if (in(t).state_dirty && t.state && now - in(t).last_knob_change >= LiveTuning::save_delay_seconds)
         start_state_save(t);
 
-    if (!t.layers_changed) return;
+    if (!in(t).layers_changed) return;
     if (params.get<ParamId::wall_clock>() == params::WallClockMode::realtime) return;  // synced_changes.hpp
-    t.layers_changed = false;
-    apply_layers(t, params, t.change_reason);
+    in(t).layers_changed = false;
+    apply_layers(t, params, in(t).change_reason);
 }
 
 void apply_layers(LiveTuning& t, params::Params& params, std::string_view reason) {
@@ -197,33 +252,51 @@ void apply_layers(LiveTuning& t, params::Params& params, std::string_view reason
 }
 
 void start_state_save(LiveTuning& t) {
-    if (!t.state_dirty || !t.state || !t.saver) return;
-    t.state_dirty = false;
+    if (!in(t).state_dirty || !t.state || !in(t).saver) return;
+    in(t).state_dirty = false;
     // Only the saver thread touches the store from here on; a newer save replaces one still waiting.
-    t.saver->submit(
+    in(t).saver->submit(
         [store = &*t.state, text = t.layers.state_text()](std::stop_token) { return store->save(text); });
 }
 
 void finish_state_save(LiveTuning& t) {
-    if (!t.saver) return;
-    while (t.saver->running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    if (auto saved = t.saver->take()) report_save(t, *saved, t.last_step);
+    if (!in(t).saver) return;
+    while (in(t).saver->running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (auto saved = in(t).saver->take()) report_save(t, *saved, in(t).last_step);
 }
 
 void save_state(LiveTuning& t) {
     if (!t.state) return;
     finish_state_save(t);  // a save submitted earlier wrote what was current then
-    t.saver.reset();       // no thread touches the store any more
-    if (!t.state_dirty) return;
-    t.state_dirty = false;
-    report_save(t, t.state->save(t.layers.state_text()), t.last_step);
+    in(t).saver.reset();   // no thread touches the store any more
+    if (!in(t).state_dirty) return;
+    in(t).state_dirty = false;
+    report_save(t, t.state->save(t.layers.state_text()), in(t).last_step);
 }
 
-void live_tuning_system(LiveTuning& tuning, params::Params& params) {
-    live_tuning_step(tuning, params, monotonic_seconds());
+std::optional<PendingChange> pending_change(const LiveTuning& t) {
+    if (!in(t).layers_changed) return std::nullopt;
+    return PendingChange{in(t).change_reason, in(t).apply_at_ns};
+}
+
+void apply_pending_change(LiveTuning& t, params::Params& params) {
+    in(t).layers_changed = false;
+    in(t).apply_at_ns.reset();
+    apply_layers(t, params, in(t).change_reason);
+}
+
+bool forget_knobs_set_by(LiveTuning& t, int entry) {
+    if (!t.layers.clear_knobs_set_by(entry)) return false;
+    in(t).state_dirty = true;  // the knob values it forgot are forgotten on disk too
+    return true;
+}
+
+void live_tuning_system(TuningInbox& inbox, LiveTuning& tuning, params::Params& params) {
+    live_tuning_step(inbox, tuning, params, monotonic_seconds());
 }
 
 Result<void> add_live_tuning(ecs::World& world, ecs::Schedule& schedule, LiveTuning tuning) {
+    if (!world.try_resource<TuningInbox>()) world.insert_resource<TuningInbox>();
     start_live_tuning(world.insert_resource<LiveTuning>(std::move(tuning)));
     schedule.add(ecs::Stage::Input, "live tuning", live_tuning_system);
     schedule.add(ecs::Stage::Exit, "save state", save_state);

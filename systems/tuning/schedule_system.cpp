@@ -64,13 +64,13 @@ std::optional<schedule::Calendar> make_calendar(const params::Config& config) {
 }
 
 bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params, double now) {
-    const bool reloaded = run.config_generation != tuning.config_generation;
+    const bool reloaded = run.config_generation != tuning.config_generation();
     const bool clock_went_back = run.evaluated && now < run.last_evaluated;
     const bool zone_changed = std::exchange(run.zone_changed, false);
     if (!reloaded && !clock_went_back && !zone_changed && now < run.next_evaluation) return false;
     if (reloaded) {
         run.calendar = make_calendar(tuning.layers.config());
-        run.config_generation = tuning.config_generation;
+        run.config_generation = tuning.config_generation();
         if (run.calendar && !run.time_zone_checked) {
             run.time_zone_checked = true;
             if (const auto problem = schedule::time_zone_problem()) spdlog::warn("schedule: {}", *problem);
@@ -92,12 +92,11 @@ bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params,
         const schedule::Transition* fired =
             last->kind == schedule::Transition::Kind::fires ? &*last : nullptr;
         for (int entry : entries_of_transition(tuning.layers.active_schedule(), active, fired))
-            knobs_cleared |= tuning.layers.clear_knobs_set_by(entry);
+            knobs_cleared |= forget_knobs_set_by(tuning, entry);
         reason = fmt::format("schedule: {} {}",
                              describe_entry(config.schedule[static_cast<std::size_t>(last->entry)]),
                              kind_text(last->kind));
     }
-    if (knobs_cleared) tuning.state_dirty = true;  // the knob values it forgot are forgotten on disk too
     const bool changed = tuning.layers.set_active_schedule(std::move(active)) || knobs_cleared;
     run.evaluated = true;
     run.last_evaluated = now;
@@ -127,7 +126,7 @@ bool zone_check_step(ZoneCheck& check, std::uint64_t config_generation, double n
 
 void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, LiveTuning& tuning,
                      params::Params& params) {
-    if (zone_check_step(zone, tuning.config_generation, clock.seconds())) run.zone_changed = true;
+    if (zone_check_step(zone, tuning.config_generation(), clock.seconds())) run.zone_changed = true;
     schedule_step(run, tuning, params, clock.seconds());
 }
 

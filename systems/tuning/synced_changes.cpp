@@ -25,11 +25,11 @@ std::string utc_text(std::int64_t ns, std::int64_t now_ns) {
 
 // Where a change lands: a remote message's apply_at when it is ahead, but not by more than
 // max_apply_ahead_ns (a mistyped time would hold this and every later change); otherwise the boundary.
-std::int64_t change_time(const LiveTuning& tuning, std::int64_t now, std::int64_t boundary) {
-    if (!tuning.apply_at_ns) return boundary;
-    const std::int64_t asked = *tuning.apply_at_ns;
+std::int64_t change_time(const PendingChange& change, std::int64_t now, std::int64_t boundary) {
+    if (!change.apply_at_ns) return boundary;
+    const std::int64_t asked = *change.apply_at_ns;
     if (asked >= now && asked - now <= max_apply_ahead_ns) return asked;
-    spdlog::warn("{}: apply_at {} is {}: applied with the wall at {} instead", tuning.change_reason,
+    spdlog::warn("{}: apply_at {} is {}: applied with the wall at {} instead", change.reason,
                  utc_text(asked, now), asked < now ? "past" : "more than an hour ahead",
                  utc_text(boundary, now));
     return boundary;
@@ -39,14 +39,15 @@ std::int64_t change_time(const LiveTuning& tuning, std::int64_t now, std::int64_
 
 void synced_changes_system(const WallClock& wall, const FrameClock& clock, const OutputPower& power,
                            LiveTuning& tuning, params::Params& params, WallSteps& steps) {
-    if (!tuning.layers_changed) return;
+    const std::optional<PendingChange> change = pending_change(tuning);
+    if (!change) return;
     if (steps.change_step == 0) {
         const std::int64_t now = wall.now_ns();
         const std::int64_t at =
-            change_time(tuning, now, change_boundary(now, params.get<ParamId::wall_change_period>()));
+            change_time(*change, now, change_boundary(now, params.get<ParamId::wall_change_period>()));
         const double rate = params.get<ParamId::wave_steps_per_second>();
         steps.change_step = static_cast<std::uint64_t>(std::max<std::int64_t>(1, step_at(at, rate)));
-        spdlog::info("{}: applies at {} (step {}), with the wall", tuning.change_reason, utc_text(at, now),
+        spdlog::info("{}: applies at {} (step {}), with the wall", change->reason, utc_text(at, now),
                      steps.change_step);
     }
     const bool due = power.on ? clock.step_index + 1 >= steps.change_step
@@ -54,9 +55,7 @@ void synced_changes_system(const WallClock& wall, const FrameClock& clock, const
                                     static_cast<std::int64_t>(steps.change_step);
     if (!due) return;
     steps.change_step = 0;
-    tuning.apply_at_ns.reset();
-    tuning.layers_changed = false;
-    apply_layers(tuning, params, tuning.change_reason);
+    apply_pending_change(tuning, params);
 }
 
 }  // namespace puddle::systems

@@ -29,8 +29,8 @@ std::vector<std::string> binary_schedule() {
     std::vector<std::string> lines = {
         "input/begin frame (reads Params, AdaptiveScale; writes Display, Device, OutputCanvas, RenderTarget)",
         "input/gpu timer begin if output on (writes AdaptiveScale)",
-        "input/reload signal (writes StopSignals, LiveTuning)",
-        "input/live tuning (writes LiveTuning, Params)",
+        "input/reload signal (writes StopSignals, TuningInbox)",
+        "input/live tuning (writes TuningInbox, LiveTuning, Params)",
         "input/schedule (reads WallClock; writes ZoneCheck, ScheduleRun, LiveTuning, Params)",
         "input/display power (reads Params; writes Display, Device, OutputPower, DisplayPower)",
         "input/synced changes if wall.clock is realtime (reads WallClock, FrameClock, OutputPower; writes "

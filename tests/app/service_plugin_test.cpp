@@ -9,6 +9,7 @@
 #include <csignal>
 #include <string>
 #include <thread>
+#include <variant>
 #include <vector>
 
 #include "params/presets.hpp"
@@ -27,7 +28,6 @@ struct Rig {
     Rig() {
         test::ScopedEnv socket("NOTIFY_SOCKET", systemd.path());
         test::ScopedEnv watchdog("WATCHDOG_USEC", "4000");  // pings at most every millisecond
-        world.insert_resource<systems::LiveTuning>(params::ParamLayers(params::Presets::load({}), {}));
         world.insert_resource<systems::PresentStatus>();
         auto added = add_service_plugin(world, schedule, std::make_unique<StopSignals>(),
                                         ServiceNotify::from_environment());
@@ -39,7 +39,7 @@ TEST(ServicePlugin, RegistersItsThreeSystemsInTheirStages) {
     Rig rig;
     EXPECT_EQ(rig.schedule.describe(),
               (std::vector<std::string>{
-                  "input/reload signal (writes StopSignals, LiveTuning)",
+                  "input/reload signal (writes StopSignals, TuningInbox)",
                   "present/watchdog ping (reads PresentStatus; writes ServiceNotify)",
                   "exit/service stopping (writes ServiceNotify)",
               }));
@@ -47,15 +47,16 @@ TEST(ServicePlugin, RegistersItsThreeSystemsInTheirStages) {
 
 TEST(ServicePlugin, SighupAsksLiveTuningToReloadOnce) {
     Rig rig;
-    auto& tuning = rig.world.resource<systems::LiveTuning>();
+    auto& inbox = rig.world.resource<systems::TuningInbox>();
     rig.schedule.run_stage(ecs::Stage::Input, rig.world);
-    EXPECT_FALSE(tuning.reload_requested);
+    EXPECT_TRUE(inbox.requests.empty());
     ASSERT_EQ(raise(SIGHUP), 0);  // blocked by StopSignals: read from its fd, never delivered
     rig.schedule.run_stage(ecs::Stage::Input, rig.world);
-    EXPECT_TRUE(tuning.reload_requested);
-    tuning.reload_requested = false;
+    ASSERT_EQ(inbox.requests.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<systems::ReloadConfig>(inbox.requests[0]));
+    inbox.requests.clear();  // as live tuning's step does
     rig.schedule.run_stage(ecs::Stage::Input, rig.world);
-    EXPECT_FALSE(tuning.reload_requested) << "one SIGHUP is one reload";
+    EXPECT_TRUE(inbox.requests.empty()) << "one SIGHUP is one reload";
 }
 
 TEST(ServicePlugin, TheWatchdogIsPingedOnlyAfterAPresentedFrameAndStoppingAtExit) {

@@ -26,10 +26,12 @@ struct Rig {
     test::TempDir dir;
     std::string config_path;
     io::MockGpio* gpio = nullptr;
+    TuningInbox inbox;
     std::optional<LiveTuning> tuning;
     params::Params params;
 
-    explicit Rig(const std::string& config_text) {
+    // watch_config false: as if inotify were unavailable (edits then apply on SIGHUP only).
+    explicit Rig(const std::string& config_text, bool watch_config = true) {
         config_path = dir.write("puddle.toml", config_text);
         tuning.emplace(params::ParamLayers(params::Presets::load({}), {}));
         tuning->config_path = config_path;
@@ -41,9 +43,11 @@ struct Rig {
         tuning->gpio = std::move(mock);
         tuning->state.emplace((dir / "state.toml").string());
         params = tuning->layers.compose();
+        if (!watch_config) tuning->config_path.clear();
         start_live_tuning(*tuning);
+        tuning->config_path = config_path;
     }
-    void step(double now) { live_tuning_step(*tuning, params, now); }
+    void step(double now) { live_tuning_step(inbox, *tuning, params, now); }
     void write_config(const std::string& text) {
         const std::string temp = dir.write("puddle.toml.new", text);
         std::filesystem::rename(temp, config_path);  // as editors save
@@ -104,13 +108,39 @@ TEST(LiveTuning, DeletedConfigKeepsRunningAndARecreatedOneApplies) {
     EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 20);
 }
 
-TEST(LiveTuning, SighupReloads) {
+// Every source but the knobs asks through the inbox; live tuning acts on the requests in the order asked,
+// in its next step, and empties it. A flood past the inbox's capacity is counted and said once.
+TEST(LiveTuning, TheInboxIsActedOnInOrderAndAFloodIsCounted) {
     Rig rig("[rain]\ndrop_count = 10\n");
-    rig.tuning->watcher.reset();  // as if inotify were unavailable
+    rig.step(1.0);
+    rig.inbox.push(SetRemoteValue{.id = ParamId::rain_drop_count, .value = 20});
+    rig.inbox.push(SetRemoteValue{.id = ParamId::rain_drop_count, .value = 30});
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10) << "nothing applies before the step";
+    rig.step(1.1);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 30);
+    EXPECT_EQ(rig.params.source(ParamId::rain_drop_count), params::ParamSource::Remote);
+    EXPECT_TRUE(rig.inbox.requests.empty());
+    EXPECT_TRUE(rig.tuning->state_unsaved()) << "a remote value is saved with the knob state";
+
+    for (std::size_t i = 0; i < TuningInbox::capacity + 5; ++i)
+        rig.inbox.push(SetRemoteValue{.id = ParamId::rain_drop_count, .value = 40});
+    EXPECT_EQ(rig.inbox.requests.size(), TuningInbox::capacity);
+    EXPECT_EQ(rig.inbox.dropped, 5u);
+    rig.step(1.2);
+    EXPECT_EQ(rig.inbox.dropped, 0u) << "said once, then counted afresh";
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 40);
+
+    rig.inbox.push(SelectPreset{.name = "no-such-preset"});  // the sender checks; a late failure is a warning
+    rig.step(1.3);
+    EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 40);
+}
+
+TEST(LiveTuning, SighupReloads) {
+    Rig rig("[rain]\ndrop_count = 10\n", false);
     std::ofstream(rig.config_path) << "[rain]\ndrop_count = 11\n";
     rig.step(1.0);
     EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 10);
-    rig.tuning->reload_requested = true;
+    rig.inbox.push(ReloadConfig{});
     rig.step(1.1);
     EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 11);
 }
@@ -314,16 +344,16 @@ TEST(LiveTuning, AReloadReadsAnEditedPresetAgain) {
     rig.dir.write("presets/mine.toml", "[rain]\ndrop_count = 5\n");
     rig.tuning->preset_folders = {(rig.dir / "presets").string()};
     rig.write_config("preset = \"mine\"\n");
-    rig.tuning->reload_requested = true;  // as SIGHUP does
+    rig.inbox.push(ReloadConfig{});  // as SIGHUP does
     rig.step(1.0);
     EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 5);
     rig.dir.write("presets/mine.toml", "[rain]\ndrop_count = 6\n");
-    rig.tuning->reload_requested = true;
+    rig.inbox.push(ReloadConfig{});
     rig.step(2.0);
     EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 6);
     // A preset edited into something invalid keeps the last good one running, presets and config alike.
     rig.dir.write("presets/mine.toml", "[rain]\ndrop_count = 999\n");
-    rig.tuning->reload_requested = true;
+    rig.inbox.push(ReloadConfig{});
     rig.step(3.0);
     EXPECT_EQ(rig.params.get<ParamId::rain_drop_count>(), 6);
     EXPECT_EQ(rig.tuning->layers.preset_name(), "mine");

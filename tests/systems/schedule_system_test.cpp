@@ -14,6 +14,7 @@
 #include "schedule/solar.hpp"
 #include "schedule/tz_guard.hpp"
 #include "support/parsed_config.hpp"
+#include "support/test_support.hpp"
 
 namespace puddle::systems {
 namespace {
@@ -32,6 +33,12 @@ struct Rig {
     }
     // One frame's schedule step at `t`.
     bool at(double t) { return schedule_step(run, tuning, params, t); }
+    // The config file becomes `text` and is reloaded, as an edit or SIGHUP does.
+    void reload(const std::string& text) {
+        tuning.config_path = dir.write("puddle.toml", text);
+        EXPECT_TRUE(reload_config(tuning));
+    }
+    test::TempDir dir;
     bool power() const { return params.get<ParamId::display_power>(); }
     LiveTuning tuning;
     params::Params params;
@@ -188,7 +195,7 @@ TEST(ScheduleSystem, AKnobChangeHoldsUntilTheNextTransition) {
     EXPECT_TRUE(rig.power());
     EXPECT_TRUE(rig.at(local(2026, 6, 6, 7, 0)));  // the window ends: the knob value is forgotten
     EXPECT_FALSE(rig.tuning.layers.knob(ParamId::display_power));
-    EXPECT_TRUE(rig.tuning.state_dirty);  // and the saved state forgets it too
+    EXPECT_TRUE(rig.tuning.state_unsaved());  // and the saved state forgets it too
     EXPECT_TRUE(rig.power());
     EXPECT_EQ(rig.params.source(ParamId::display_power), ParamSource::Default);
     rig.at(local(2026, 6, 6, 23, 0));
@@ -230,9 +237,7 @@ TEST(ScheduleSystem, AReloadReevaluatesWithoutForgettingKnobs) {
     Rig rig(night_off);
     rig.at(local(2026, 6, 5, 12, 0));
     rig.tuning.layers.set_knob(ParamId::display_power, false);
-    ASSERT_TRUE(rig.tuning.layers.set_config(
-        test::parsed_config("[[schedule]]\nfrom = \"11:00\"\nto = \"13:00\"\nbrightness = 0.5\n")));
-    ++rig.tuning.config_generation;
+    rig.reload("[[schedule]]\nfrom = \"11:00\"\nto = \"13:00\"\nbrightness = 0.5\n");
     EXPECT_TRUE(rig.at(local(2026, 6, 5, 12, 0) + 1));
     EXPECT_FLOAT_EQ(rig.params.get<ParamId::display_brightness>(), 0.5f);
     EXPECT_TRUE(rig.tuning.layers.knob(ParamId::display_power));  // a reload is no transition
@@ -266,7 +271,7 @@ TEST(ScheduleSystem, ATimeZoneChangeIsEvaluatedAgainAtAReloadAndWithinAMinute) {
     EXPECT_TRUE(rig.power()) << "22:00 in Berlin is 16:00 in New York";
     // Back to Berlin with a reload (SIGHUP): at once, on that frame.
     ::setenv("TZ", "Europe/Berlin", 1);
-    ++rig.tuning.config_generation;
+    rig.reload(night_off);
     frame();
     EXPECT_DOUBLE_EQ(rig.run.next_evaluation, berlin_23);
 }

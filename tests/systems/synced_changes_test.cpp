@@ -36,7 +36,7 @@ struct Screen {
     // One frame: the input stage's systems in the binary's order, then the due steps, each noting the
     // intensity it simulated with.
     void frame() {
-        live_tuning_step(*tuning, params, static_cast<double>(now) * 1e-9);
+        live_tuning_step(inbox, *tuning, params, static_cast<double>(now) * 1e-9);
         synced_changes_system(wall, clock, power, *tuning, params, steps);
         wall_steps_system(wall, power, look, params, steps, clock);
         for (int i = 0; i < clock.steps_due; ++i) {
@@ -53,6 +53,7 @@ struct Screen {
 
     test::TempDir dir;
     std::string config_path;
+    TuningInbox inbox;
     std::optional<LiveTuning> tuning;
     params::Params params;
     std::int64_t now;
@@ -78,7 +79,7 @@ TEST(SyncedChanges, AConfigEditReadAtDifferentMomentsAppliesAtTheSameStep) {
     // The step of the next whole second after the read, plus one second.
     EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(read_at, 1.0), 60.0));
     EXPECT_EQ(a.steps.change_step, 0u);
-    EXPECT_FALSE(a.tuning->layers_changed);
+    EXPECT_FALSE(pending_change(*a.tuning));
 }
 
 // While the output is off nothing is simulated, yet a pending change still applies at its time. Held for a
@@ -87,14 +88,11 @@ TEST(SyncedChanges, AChangeWhileTheOutputIsOffAppliesAtItsTime) {
     Screen a(0);
     for (int i = 0; i < 30; ++i) a.frame();
     a.power.on = false;
-    a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
-    a.tuning->layers_changed = true;
-    a.tuning->change_reason = "remote";
     const std::int64_t at = a.now + 300'000'000;
-    a.tuning->apply_at_ns = at;
+    a.inbox.push(SetRemoteValue{.id = ParamId::rain_intensity, .value = 0.8f, .apply_at_ns = at});
     for (int i = 0; i < 30; ++i) a.frame();
     EXPECT_EQ(a.params.get<ParamId::rain_intensity>(), 0.8f);
-    EXPECT_FALSE(a.tuning->layers_changed);
+    EXPECT_FALSE(pending_change(*a.tuning));
     EXPECT_GE(a.now, at);
 }
 
@@ -103,10 +101,7 @@ TEST(SyncedChanges, ARemoteApplyAtIsTheStep) {
     Screen a(0);
     for (int i = 0; i < 30; ++i) a.frame();
     const std::int64_t at = a.now + 500'000'000;
-    a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
-    a.tuning->layers_changed = true;
-    a.tuning->change_reason = "remote";
-    a.tuning->apply_at_ns = at;
+    a.inbox.push(SetRemoteValue{.id = ParamId::rain_intensity, .value = 0.8f, .apply_at_ns = at});
     for (int i = 0; i < 60; ++i) a.frame();
     ASSERT_TRUE(a.first_new_step);
     EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(at, 60.0));
@@ -120,15 +115,13 @@ TEST(SyncedChanges, AnApplyAtPastOrMoreThanAnHourAheadLandsAtTheBoundary) {
         SCOPED_TRACE(offset);
         Screen a(0);
         for (int i = 0; i < 30; ++i) a.frame();
-        a.tuning->layers.set_remote(ParamId::rain_intensity, 0.8f);
-        a.tuning->layers_changed = true;
-        a.tuning->change_reason = "remote";
-        a.tuning->apply_at_ns = a.now + offset;
+        a.inbox.push(
+            SetRemoteValue{.id = ParamId::rain_intensity, .value = 0.8f, .apply_at_ns = a.now + offset});
         const std::int64_t read_at = a.now;
         for (int i = 0; i < 180; ++i) a.frame();
         ASSERT_TRUE(a.first_new_step);
         EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(read_at, 1.0), 60.0));
-        EXPECT_FALSE(a.tuning->layers_changed) << "nothing left pending";
+        EXPECT_FALSE(pending_change(*a.tuning)) << "nothing left pending";
     }
 }
 
