@@ -218,7 +218,7 @@ int run(int argc, const char* const* argv) {
     Engine& e = **engine;
     StopSignals& stop = e.world().resource<StopSignals>();
     const ServiceNotify& service = e.world().resource<ServiceNotify>();
-    const bool headless = e.display().kind() == platform::BackendKind::Headless;
+    const bool headless = !e.display().shows_frames();
     const std::string preset = e.world().resource<systems::LiveTuning>().layers.preset_name();
     const auto& caps = e.device().caps();
     const auto* zone = e.world().try_resource<systems::ZoneCheck>();
@@ -241,9 +241,8 @@ int run(int argc, const char* const* argv) {
     }
 
     // On a kiosk screen the text console must not draw over the picture; restored on every exit path.
-    const auto console = e.display().kind() == platform::BackendKind::Kms
-                             ? platform::ConsoleGraphicsMode::enter()
-                             : std::nullopt;
+    const auto console =
+        e.display().owns_the_console() ? platform::ConsoleGraphicsMode::enter() : std::nullopt;
     if (service.enabled())
         spdlog::info(
             "systemd: READY after the first frame{}",

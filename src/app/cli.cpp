@@ -4,8 +4,11 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "app/version.hpp"
+#include "platform/backend_select.hpp"
 
 namespace puddle::app {
 
@@ -92,10 +95,14 @@ void describe_command_line(CLI::App& cli, CliOptions& o, std::string& backend, s
                  "next transition): OK or what to fix, then exit");
     cli.add_flag("--print-config", o.print_config,
                  "Print every effective value and where it came from, then exit");
-    cli.add_option("--backend,-b", backend,
-                   "Display: auto, kms (fullscreen on a screen), window (desktop), headless")
-        ->check(CLI::IsMember({"auto", "kms", "window", "headless"}))
-        ->type_name("KIND");
+    // The choices and their help come from the backend table (platform/backend_select.hpp).
+    std::vector<std::string> backends{"auto"};
+    std::string backend_help = "Display: auto (the first of these that works here)";
+    for (const platform::BackendInfo& b : platform::display_backends()) {
+        backends.emplace_back(b.name);
+        backend_help += fmt::format("; {}: {}", b.name, b.summary);
+    }
+    cli.add_option("--backend,-b", backend, backend_help)->check(CLI::IsMember(backends))->type_name("KIND");
     cli.add_option("--size", size,
                    "Render size WIDTHxHEIGHT (headless default 640x360; kms: picks that mode)")
         ->type_name("WIDTHxHEIGHT");
@@ -181,12 +188,7 @@ Result<CliOptions> parse_command_line(int argc, const char* const* argv) {
         o.preset = a.substr(7);
         return true;
     });
-    if (backend == "kms")
-        o.display.backend = platform::BackendKind::Kms;
-    else if (backend == "window")
-        o.display.backend = platform::BackendKind::Window;
-    else if (backend == "headless")
-        o.display.backend = platform::BackendKind::Headless;
+    o.display.backend = platform::backend_from_name(backend).value_or(platform::BackendKind::Auto);
     if (!size.empty()) {
         auto s = parse_size(size);
         if (!s) return s.error();

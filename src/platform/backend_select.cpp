@@ -10,18 +10,34 @@
 
 namespace puddle::platform {
 
+namespace {
+
+constexpr BackendInfo backend_table[] = {
+    {BackendKind::Kms, "kms", "fullscreen on a screen through DRM/KMS, no desktop needed",
+     create_kms_display},
+    {BackendKind::Window, "window", "a window on an X11 desktop", create_window_display},
+    {BackendKind::Headless, "headless", "no screen, renders offscreen and writes a PNG",
+     create_headless_display},
+};
+
+}  // namespace
+
+std::span<const BackendInfo> display_backends() {
+    return backend_table;
+}
+
 std::string_view backend_name(BackendKind k) {
-    switch (k) {
-        case BackendKind::Auto:
-            return "auto";
-        case BackendKind::Headless:
-            return "headless";
-        case BackendKind::Kms:
-            return "kms";
-        case BackendKind::Window:
-            return "window";
-    }
+    if (k == BackendKind::Auto) return "auto";
+    for (const BackendInfo& b : backend_table)
+        if (b.kind == k) return b.name;
     return "unknown";
+}
+
+std::optional<BackendKind> backend_from_name(std::string_view name) {
+    if (name == "auto") return BackendKind::Auto;
+    for (const BackendInfo& b : backend_table)
+        if (b.name == name) return b.kind;
+    return std::nullopt;
 }
 
 BackendChoice choose_backend(BackendKind requested, const KmsProbe& kms, const char* display_env) {
@@ -44,16 +60,8 @@ BackendChoice choose_backend(BackendKind requested, const KmsProbe& kms, const c
 namespace {
 
 Result<std::unique_ptr<Display>> create_backend(BackendKind kind, const DisplayOptions& options) {
-    switch (kind) {
-        case BackendKind::Kms:
-            return create_kms_display(options);
-        case BackendKind::Window:
-            return create_window_display(options);
-        case BackendKind::Headless:
-            return create_headless_display(options);
-        case BackendKind::Auto:
-            break;
-    }
+    for (const BackendInfo& b : backend_table)
+        if (b.kind == kind) return b.create(options);
     return make_error(ExitCode::Display, "display: no backend for '{}'", backend_name(kind));
 }
 

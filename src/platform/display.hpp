@@ -19,6 +19,7 @@ namespace puddle::platform {
 bool current_display_has_extension(std::string_view name);
 
 enum class BackendKind { Auto, Headless, Kms, Window };
+// "auto", "headless", "kms", "window": the spelling --backend takes (backend_select.cpp's table).
 std::string_view backend_name(BackendKind k);
 
 struct DisplayOptions {
@@ -44,6 +45,14 @@ public:
     // do).
     virtual void make_current() = 0;
     virtual BackendKind kind() const = 0;
+    // What differs between backends, asked instead of comparing kind():
+    // Whether anyone sees the frames (false headless: the run renders a fixed number of frames and
+    // writes the last one as a PNG unless told otherwise).
+    virtual bool shows_frames() const { return true; }
+    // Whether set_power really switches an output off (kms: DPMS); otherwise the caller draws black.
+    virtual bool switches_output_power() const { return false; }
+    // Whether this display takes over the text console (kms), which must then stop drawing over it.
+    virtual bool owns_the_console() const { return false; }
     virtual glm::ivec2 size() const = 0;
     // Frames per second the display shows, the default target of the adaptive scale (render.target_fps
     // -1): kms the mode's refresh, a window 60 (X11 does not say without XRandR), headless 0 (none).

@@ -34,6 +34,7 @@ public:
         return context_.create_worker_context();
     }
     BackendKind kind() const override { return BackendKind::Headless; }
+    bool shows_frames() const override { return false; }
     glm::ivec2 size() const override { return size_; }
     gpu::FrameTarget frame_target() const override { return {&target_, size_}; }
     bool poll_events() override { return true; }

@@ -258,6 +258,8 @@ public:
     }
 
     BackendKind kind() const override { return BackendKind::Kms; }
+    bool switches_output_power() const override { return true; }
+    bool owns_the_console() const override { return true; }
     glm::ivec2 size() const override { return {mode_.hdisplay, mode_.vdisplay}; }
     double refresh_hz() const override { return mode_.vrefresh; }
     gpu::FrameTarget frame_target() const override { return {nullptr, size()}; }

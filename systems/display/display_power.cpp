@@ -31,7 +31,7 @@ void apply_power(platform::Display& display, gpu::Device& device, const params::
                  OutputPower& power, DisplayPower& state, bool on) {
     power.on = on;
     power.black_frame_pending = false;
-    if (display.kind() == platform::BackendKind::Kms) {
+    if (display.switches_output_power()) {
         if (auto r = display.set_power(on); !r)  // logged by the backend when it works
             spdlog::error("{} (the picture stays {})", r.error().message, on ? "off" : "on");
     } else if (!on) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -23,6 +24,24 @@ TEST(BackendSelect, NamesEveryBackend) {
     EXPECT_EQ(backend_name(BackendKind::Headless), "headless");
     EXPECT_EQ(backend_name(BackendKind::Kms), "kms");
     EXPECT_EQ(backend_name(BackendKind::Window), "window");
+}
+
+// The table is the one list: every backend once, its name read back to it, a factory and a summary (the
+// --help text and the manual page are made from them).
+TEST(BackendSelect, TheTableNamesEachBackendOnceAndReadsItsNameBack) {
+    std::vector<std::string_view> names;
+    for (const BackendInfo& b : display_backends()) {
+        EXPECT_EQ(backend_name(b.kind), b.name);
+        EXPECT_EQ(backend_from_name(b.name), b.kind);
+        EXPECT_NE(b.create, nullptr) << b.name;
+        EXPECT_FALSE(b.summary.empty()) << b.name;
+        EXPECT_EQ(std::count(names.begin(), names.end(), b.name), 0) << b.name;
+        names.push_back(b.name);
+    }
+    EXPECT_EQ(names.size(), 3u);
+    EXPECT_EQ(backend_from_name("auto"), BackendKind::Auto);
+    EXPECT_FALSE(backend_from_name("Kms"));
+    EXPECT_FALSE(backend_from_name(""));
 }
 
 TEST(BackendSelect, AutoPrefersKmsWhenACardIsUsable) {

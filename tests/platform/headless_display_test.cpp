@@ -23,6 +23,16 @@ TEST(HeadlessDisplay, OffscreenTargetHasTheRequestedSize) {
     EXPECT_TRUE((*d)->present().ok());
 }
 
+// What differs from a screen, as callers ask it: nobody sees the frames, and there is no output to
+// switch off or console to take over.
+TEST(HeadlessDisplay, SaysItShowsNoFramesAndSwitchesNoOutput) {
+    auto d = create_headless_display({.backend = BackendKind::Headless, .size = {16, 16}});
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    EXPECT_FALSE((*d)->shows_frames());
+    EXPECT_FALSE((*d)->switches_output_power());
+    EXPECT_FALSE((*d)->owns_the_console());
+}
+
 TEST(HeadlessDisplay, DefaultSizeIs640x360) {
     auto d = create_headless_display({.backend = BackendKind::Headless});
     ASSERT_TRUE(d.ok()) << d.error().message;

@@ -222,6 +222,9 @@ TEST_F(WindowDisplayTest, OpensAWindowOfTheRequestedSize) {
     auto display = open_window({320, 240});
     ASSERT_TRUE(display);
     EXPECT_EQ(display->kind(), BackendKind::Window);
+    EXPECT_TRUE(display->shows_frames());
+    EXPECT_FALSE(display->switches_output_power()) << "a window draws black instead";
+    EXPECT_FALSE(display->owns_the_console());
     EXPECT_EQ(display->size(), glm::ivec2(320, 240));
     EXPECT_EQ(display->frame_target().texture, nullptr);
     EXPECT_EQ(display->frame_target().size, glm::ivec2(320, 240));
