@@ -10,6 +10,7 @@
 
 #include "app/app.hpp"
 #include "app/cli.hpp"
+#include "app/startup.hpp"
 #include "app/version.hpp"
 #include "camera/format_negotiation.hpp"
 #include "camera/v4l2_io.hpp"
@@ -158,24 +159,26 @@ int run_check(const CliOptions& o, const std::string& config_path, const CheckSo
     std::optional<std::string> wall_problem;
     if (config_path.empty()) {
         r.absent("no config file (/etc/puddle/puddle.toml does not exist): built-in defaults are used");
+    }
+    // Assembled as the run does (app/startup.hpp): the presets the config names, --preset and --set too.
+    CliOptions as_run = o;
+    as_run.config_path = config_path;
+    auto tuning = load_tuning(as_run, StartFor::check);
+    if (!tuning) {
+        r.fix(tuning.error().message);
+        exit_code = static_cast<int>(ExitCode::Config);
     } else {
-        auto config = params::load_config_file(config_path);
-        // The presets it names (top level and in schedule entries) must exist, as they must at start-up.
-        params::ParamLayers layers(params::Presets::load(preset_folders_for(config_path)), {});
-        auto composed = config ? layers.set_config(*config) : Result<void>(config.error());
-        if (!composed) {
-            r.fix(composed.error().message);
-            exit_code = static_cast<int>(ExitCode::Config);
-        } else {
-            r.ok(fmt::format("{}: valid ({} values, {} knobs{}{})", config_path, config->entries.size(),
-                             config->knobs.size(), config->preset ? ", preset " : "",
-                             config->preset.value_or("")));
-            knobs = config->knobs;
-            const params::Params composed_params = layers.compose();
-            realtime = composed_params.get<params::ParamId::wall_clock>() == params::WallClockMode::realtime;
-            wall_problem = systems::wall_timing_problem(composed_params);
-            check_schedule(r, *config);
+        const params::Config& config = tuning->layers.config();
+        if (!config_path.empty()) {
+            const std::string& preset = tuning->layers.preset_name();
+            r.ok(fmt::format("{}: valid ({} values, {} knobs{}{})", config_path, config.entries.size(),
+                             config.knobs.size(), preset.empty() ? "" : ", preset ", preset));
+            check_schedule(r, config);
         }
+        knobs = config.knobs;
+        const params::Params composed_params = tuning->layers.compose();
+        realtime = composed_params.get<params::ParamId::wall_clock>() == params::WallClockMode::realtime;
+        wall_problem = systems::wall_timing_problem(composed_params);
     }
     if (!knobs.empty()) check_saved_state(r, o);
     check_clock(r, sources.clock_sync(), realtime, wall_problem);

@@ -26,7 +26,7 @@ protected:
         return o;
     }
     static params::Params compose(const CliOptions& o) {
-        auto tuning = load_tuning(o, true);
+        auto tuning = load_tuning(o, StartFor::print_config);
         EXPECT_TRUE(tuning.ok()) << tuning.error().message;
         return tuning.ok() ? tuning->layers.compose() : params::Params{};
     }
@@ -67,13 +67,13 @@ TEST_F(LoadTuning, ASetStillOverridesSeedAndCamera) {
 TEST_F(LoadTuning, ABadSetIsAConfigErrorNamingIt) {
     CliOptions o = options("");
     o.sets = {"rain.seed=7", "rain.no_such=1"};
-    auto unknown = load_tuning(o, true);
+    auto unknown = load_tuning(o, StartFor::print_config);
     ASSERT_FALSE(unknown.ok());
     EXPECT_EQ(unknown.error().code, ExitCode::Config);
     EXPECT_TRUE(unknown.error().message.starts_with("--set rain.no_such=1: unknown parameter 'rain.no_such'"))
         << unknown.error().message;
     o.sets = {"rain.seed"};
-    auto no_value = load_tuning(o, true);
+    auto no_value = load_tuning(o, StartFor::print_config);
     ASSERT_FALSE(no_value.ok());
     EXPECT_EQ(no_value.error().code, ExitCode::Config);
     EXPECT_TRUE(no_value.error().message.starts_with("--set rain.seed: expected name=value"))
@@ -82,25 +82,40 @@ TEST_F(LoadTuning, ABadSetIsAConfigErrorNamingIt) {
 
 TEST_F(LoadTuning, TheSavedStateIsReadOnlyWhenTheConfigHasKnobs) {
     CliOptions o = options("[rain]\nintensity = 0.5\n");
-    auto without = load_tuning(o, true);
+    auto without = load_tuning(o, StartFor::print_config);
     ASSERT_TRUE(without.ok()) << without.error().message;
     EXPECT_FALSE(without->state.has_value()) << "no knobs: no state store";
     EXPECT_FLOAT_EQ(without->layers.compose().get<ParamId::rain_intensity>(), 0.5f)
         << "the state file unread";
 
     o = options(knob_config + "[rain]\nintensity = 0.5\n");
-    auto with = load_tuning(o, true);
+    auto with = load_tuning(o, StartFor::print_config);
     ASSERT_TRUE(with.ok()) << with.error().message;
     ASSERT_TRUE(with->state.has_value());
     EXPECT_EQ(with->state->path(), o.state_path);
     EXPECT_FLOAT_EQ(with->layers.compose().get<ParamId::rain_intensity>(), 1.5f) << "the knob's saved value";
-    EXPECT_NE(with->gpio, nullptr) << "the knobs' backend";
+    EXPECT_EQ(with->gpio, nullptr) << "--print-config opens no GPIO chip";
+    auto run = load_tuning(o, StartFor::run);
+    ASSERT_TRUE(run.ok()) << run.error().message;
+    EXPECT_NE(run->gpio, nullptr) << "the knobs' backend";
+    EXPECT_FLOAT_EQ(run->layers.compose().get<ParamId::rain_intensity>(), 1.5f);
+}
+
+// --check assembles what the run would (app/startup.hpp) but reads no saved state (it reports on the file
+// itself) and opens no GPIO.
+TEST_F(LoadTuning, ACheckReadsNoSavedStateAndOpensNoGpio) {
+    CliOptions o = options(knob_config + "[rain]\nintensity = 0.5\n");
+    auto check = load_tuning(o, StartFor::check);
+    ASSERT_TRUE(check.ok()) << check.error().message;
+    EXPECT_FALSE(check->state.has_value());
+    EXPECT_EQ(check->gpio, nullptr);
+    EXPECT_FLOAT_EQ(check->layers.compose().get<ParamId::rain_intensity>(), 0.5f) << "the config's, no knob";
 }
 
 TEST_F(LoadTuning, AGpioTypoIsAConfigErrorEvenWithoutKnobs) {
     CliOptions o = options("");
     o.gpio = "gpoid";
-    auto r = load_tuning(o, true);
+    auto r = load_tuning(o, StartFor::print_config);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ExitCode::Config);
     EXPECT_TRUE(r.error().message.starts_with("--gpio gpoid: expected \"gpiod\" or \"mock:PATH\""))
@@ -111,7 +126,7 @@ TEST_F(LoadTuning, AGpioTypoIsAConfigErrorEvenWithoutKnobs) {
 TEST_F(LoadTuning, AScreenOffTheWallIsAConfigError) {
     CliOptions o = options("[wall]\ncolumns = 2\nrows = 2\n");
     o.sets = {"wall.row=1", "wall.column=2"};
-    auto r = load_tuning(o, true);
+    auto r = load_tuning(o, StartFor::print_config);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ExitCode::Config);
     EXPECT_EQ(
@@ -125,7 +140,7 @@ TEST_F(LoadTuning, AScreenOffTheWallIsAConfigError) {
 
 TEST_F(LoadTuning, AConfigErrorIsReturnedAsItIs) {
     CliOptions o = options("[rain]\nseed = \"five\"\n");
-    auto r = load_tuning(o, true);
+    auto r = load_tuning(o, StartFor::print_config);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ExitCode::Config);
     EXPECT_NE(r.error().message.find(o.config_path), std::string::npos) << r.error().message;
