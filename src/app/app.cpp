@@ -11,15 +11,10 @@
 #include "app/check.hpp"
 #include "app/cli.hpp"
 #include "app/engine.hpp"
-#include "app/frame_stats.hpp"
 #include "app/logging.hpp"
 #include "app/process_setup.hpp"
-#include "app/remote_plugin.hpp"
 #include "app/screenshot_file.hpp"
-#include "app/service_notify.hpp"
-#include "app/service_plugin.hpp"
 #include "app/signals.hpp"
-#include "app/version.hpp"
 #include "app/wall_screenshot.hpp"
 #include "assets/image_io.hpp"
 #include "io/gpio_backend.hpp"
@@ -29,11 +24,16 @@
 #include "platform/console_mode.hpp"
 #include "schedule/zone_watch.hpp"
 #include "systems/clock/wall_steps.hpp"
+#include "systems/common/frame_stats.hpp"
 #include "systems/display/display_power.hpp"
 #include "systems/puddle/puddle_plugin.hpp"
+#include "systems/remote/remote_plugin.hpp"
+#include "systems/service/service_notify.hpp"
+#include "systems/service/service_plugin.hpp"
 #include "systems/tuning/live_tuning.hpp"
 #include "systems/tuning/schedule_system.hpp"
 #include "util/valid_utf8.hpp"
+#include "util/version.hpp"
 
 namespace puddle::app {
 
@@ -49,25 +49,29 @@ int fail(const Error& e) {
 
 }  // namespace
 
-std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals, ServiceNotify& service,
-                                            systems::LiveTuning& tuning) {
+std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals,
+                                            systems::ServiceNotify& service, systems::LiveTuning& tuning) {
     return {
+        // The stop and reload signals are the program's (app/signals.hpp); the service feature is handed
+        // the reload one.
         [&](ecs::World& w, ecs::Schedule& s) {
-            return add_service_plugin(w, s, std::move(signals), std::move(service));
+            StopSignals& stop = w.adopt_resource<StopSignals>(std::move(signals));
+            return systems::add_service_plugin(w, s, {[&stop] { return stop.take_reload(); }},
+                                               std::move(service));
         },
         [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
         systems::add_schedule,
         systems::add_display_power,
         systems::add_puddle_plugin,
-        add_remote_plugin,
+        systems::add_remote_plugin,
     };
 }
 
 namespace {
 
 // One --stats line. spdlog formats into a stack buffer, so this does not allocate either.
-void log_stats(const FrameStats::Summary& s, const systems::AdaptiveScale& adaptive) {
-    const MemoryStatus m = read_memory_status();
+void log_stats(const systems::FrameStats::Summary& s, const systems::AdaptiveScale& adaptive) {
+    const systems::MemoryStatus m = systems::read_memory_status();
     spdlog::info(
         "stats: {:.1f} fps over {} frames; frame ms p50 {:.2f} p95 {:.2f} p99 {:.2f} max {:.2f}; "
         "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB; render scale {:.2f}{}",
@@ -89,7 +93,7 @@ struct DisplayRun {
     // On a kiosk screen the text console must not draw over the picture; restored on every exit path
     // (declared after the engine, so it is restored before the display closes).
     std::optional<platform::ConsoleGraphicsMode> console;
-    FrameStats stats{5.0};
+    systems::FrameStats stats{5.0};
 };
 
 // Makes the engine with the binary's features and decides the run's frames and screenshot.
@@ -104,7 +108,7 @@ Result<DisplayRun> start(CliOptions& o, systems::LiveTuning& tuning) {
     // Before any thread starts (main blocked the three already), so that every thread (Mesa's too) has
     // SIGINT, SIGTERM and SIGHUP blocked and they arrive only through the signalfd, one sent earlier too.
     auto signals = std::make_unique<StopSignals>();
-    ServiceNotify notify = ServiceNotify::from_environment();
+    systems::ServiceNotify notify = systems::ServiceNotify::from_environment();
     auto engine = Engine::create(*params, o.display, {.background_compiles = true},
                                  puddle_features(signals, notify, tuning));
     if (!engine) return engine.error();
@@ -132,14 +136,14 @@ Result<DisplayRun> start(CliOptions& o, systems::LiveTuning& tuning) {
     }
     if (e.display().owns_the_console())
         if (auto console = platform::ConsoleGraphicsMode::enter()) run.console.emplace(std::move(*console));
-    const ServiceNotify& service = e.world().resource<ServiceNotify>();
+    const systems::ServiceNotify& service = e.world().resource<systems::ServiceNotify>();
     if (service.enabled())
         spdlog::info(
             "systemd: READY after the first frame{}",
             service.watchdog_interval() > 0
                 ? fmt::format(", watchdog every {:g} s while frames are presented", service.ping_interval())
                 : std::string());
-    run.stats = FrameStats(o.stats_every > 0 ? o.stats_every : 5.0);
+    run.stats = systems::FrameStats(o.stats_every > 0 ? o.stats_every : 5.0);
     return run;
 }
 
@@ -192,7 +196,7 @@ Result<void> finish(DisplayRun& run, const CliOptions& o) {
     if (o.stats_every > 0) {
         if (const auto s = run.stats.summary(); s.frames > 0)
             log_stats(s, e.world().resource<systems::AdaptiveScale>());
-        const MemoryStatus m = read_memory_status();
+        const systems::MemoryStatus m = systems::read_memory_status();
         spdlog::info(
             "stats: peak resident memory {:.1f} MB (VmHWM), {:.1f} MB now (VmRSS: {:.1f} MB anonymous, "
             "{:.1f} MB of the binary and shared libraries)",

@@ -6,9 +6,9 @@
 
 #include "app/cli.hpp"
 #include "app/engine.hpp"
-#include "app/service_notify.hpp"
 #include "app/signals.hpp"
 #include "app/startup.hpp"
+#include "systems/service/service_notify.hpp"
 #include "systems/tuning/live_tuning.hpp"
 #include "util/result.hpp"
 
@@ -19,7 +19,7 @@ int run(int argc, const char* const* argv);
 // The features the puddle binary installs, in this order: the service (signals, systemd), live tuning,
 // the puddle, remote control (MQTT; nothing unless [remote] asks for it). The plugins take their arguments
 // over (moved from) when Engine::create runs them.
-std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals, ServiceNotify& service,
-                                            systems::LiveTuning& tuning);
+std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signals,
+                                            systems::ServiceNotify& service, systems::LiveTuning& tuning);
 
 }  // namespace puddle::app

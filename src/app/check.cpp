@@ -11,7 +11,6 @@
 #include "app/app.hpp"
 #include "app/cli.hpp"
 #include "app/startup.hpp"
-#include "app/version.hpp"
 #include "camera/format_negotiation.hpp"
 #include "camera/v4l2_io.hpp"
 #include "gpu/device.hpp"
@@ -25,6 +24,7 @@
 #include "schedule/zone_watch.hpp"
 #include "systems/clock/wall_steps.hpp"
 #include "systems/tuning/schedule_system.hpp"
+#include "util/version.hpp"
 
 namespace puddle::app {
 

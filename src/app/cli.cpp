@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/version.hpp"
 #include "platform/backend_select.hpp"
+#include "util/version.hpp"
 
 namespace puddle::app {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <system_error>
 
-#include "app/screenshot_jpeg.hpp"
 #include "assets/image_io.hpp"
+#include "systems/remote/screenshot_jpeg.hpp"
 
 namespace puddle::app {
 
@@ -20,7 +20,7 @@ ScreenshotFormat screenshot_format(std::string_view path) {
 namespace {
 
 Result<void> write_jpeg(const std::string& path, const assets::Image& image) {
-    const std::string jpeg = screenshot_jpeg(image, image.width);
+    const std::string jpeg = systems::screenshot_jpeg(image, image.width);
     if (jpeg.empty())
         return make_error(ExitCode::Asset,
                           "image: {}: cannot write: only non-empty RGBA8 images are written as JPEG", path);

@@ -113,5 +113,4 @@ Result<systems::LiveTuning> load_tuning(const CliOptions& o, StartFor purpose) {
     return tuning;
 }
 
-
 }  // namespace puddle::app

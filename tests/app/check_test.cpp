@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "app/cli.hpp"
-#include "app/version.hpp"
 #include "gpu/device.hpp"
 #include "platform/display.hpp"
 #include "support/test_support.hpp"
+#include "util/version.hpp"
 
 namespace puddle::test {
 namespace {
@@ -111,8 +111,7 @@ TEST(Check, ReportsTheNodesItIsGivenLineByLine) {
         check_here({"--gpio", "mock:", "--config", cfg}, {.dri_folder = dri, .video_folder = dev});
     EXPECT_EQ(o.exit_code, 0) << "hardware problems are reported, not fatal:\n" << o.output;
     auto s = sections(o.output);
-    EXPECT_EQ(s[""], std::vector<std::string>{"puddle " + std::string(app::version()) + " --check"})
-        << o.output;
+    EXPECT_EQ(s[""], std::vector<std::string>{"puddle " + std::string(version()) + " --check"}) << o.output;
     EXPECT_EQ(s["[config]"], std::vector<std::string>{"  OK    " + cfg + ": valid (2 values, 0 knobs)"});
     EXPECT_EQ(s["[display: DRM/KMS (--backend kms)]"],
               (std::vector<std::string>{"  --    " + dri + "/card0: no display outputs (a render-only GPU)",

@@ -29,7 +29,7 @@ std::vector<std::string> binary_schedule() {
     std::vector<std::string> lines = {
         "input/begin frame (reads Params, AdaptiveScale; writes Display, Device, OutputCanvas, RenderTarget)",
         "input/gpu timer begin if output on (writes AdaptiveScale)",
-        "input/reload signal (writes StopSignals, TuningInbox)",
+        "input/reload signal (writes ReloadSignal, TuningInbox)",
         "input/live tuning (writes TuningInbox, LiveTuning, Params)",
         "input/schedule (reads WallClock; writes ZoneCheck, ScheduleRun, LiveTuning, Params)",
         "input/display power (reads Params; writes Display, Device, OutputPower, DisplayPower)",
@@ -51,7 +51,7 @@ std::vector<std::string> binary_schedule() {
 
 TEST(Engine, TheBinarysFrameIsThisScheduleInThisOrder) {
     auto signals = std::make_unique<StopSignals>();
-    ServiceNotify service;
+    systems::ServiceNotify service;
     systems::LiveTuning tuning(params::ParamLayers({}, {}));
     auto engine = Engine::create(params::Params{}, headless(), {}, puddle_features(signals, service, tuning));
     ASSERT_TRUE(engine.ok()) << engine.error().message;

@@ -16,14 +16,14 @@
 #include <string>
 #include <thread>
 
-#include "app/frame_stats.hpp"
-#include "app/remote_plugin.hpp"
 #include "params/config_loader.hpp"
 #include "support/gpu_fixture.hpp"
 #include "support/mosquitto_broker.hpp"
+#include "systems/common/frame_stats.hpp"
 #include "systems/display/display_power.hpp"
 #include "systems/output/adaptive_scale.hpp"
 #include "systems/puddle/puddle_plugin.hpp"
+#include "systems/remote/remote_plugin.hpp"
 #include "systems/tuning/live_tuning.hpp"
 #include "systems/tuning/schedule_system.hpp"
 
@@ -133,7 +133,7 @@ void print_traces(long count) {
 
 constexpr int warm_up_frames = 30, counted_frames = 300;
 
-void expect_no_allocation_in_frames(app::Engine& engine, app::FrameStats& stats) {
+void expect_no_allocation_in_frames(app::Engine& engine, systems::FrameStats& stats) {
     void* probe[1];
     backtrace(probe, 1);  // loads libgcc's unwinder now, not inside the hook
     for (int n = 0; n < warm_up_frames; ++n) ASSERT_TRUE(engine.frame(1.0 / 60.0).ok());
@@ -160,7 +160,7 @@ TEST(FrameAllocation, TheCounterSeesAllocations) {  // else a zero below would p
 TEST(FrameAllocation, SteadyStateFramesAllocateNothing) {
     auto engine = make_engine(params::Params{}, {160, 90});
     ASSERT_TRUE(engine);
-    app::FrameStats stats(0.5);
+    systems::FrameStats stats(0.5);
     expect_no_allocation_in_frames(*engine, stats);
 }
 
@@ -171,7 +171,7 @@ TEST(FrameAllocation, SteadyStateFramesWithTheAdaptiveScaleAllocateNothing) {
     ASSERT_TRUE(engine);
     auto& adaptive = engine->world().resource<systems::AdaptiveScale>();
     adaptive.timing.hold_s = 0.1;
-    app::FrameStats stats(0.5);
+    systems::FrameStats stats(0.5);
     expect_no_allocation_in_frames(*engine, stats);
     ASSERT_TRUE(adaptive.controller.has_value());
     EXPECT_GT(adaptive.controller->last_cost_s(), 0.0) << "it measured frames and decided";
@@ -189,7 +189,7 @@ TEST(FrameAllocation, SteadyStateFramesWithLiveTuningAllocateNothing) {
                              },
                              systems::add_puddle_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
-    app::FrameStats stats(0.5);
+    systems::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);
 }
 
@@ -216,7 +216,7 @@ TEST(FrameAllocation, SteadyStateFramesWithAScheduleAllocateNothing) {
     (*engine)->world().resource<systems::WallClock>().now_ns = [] {
         return std::int64_t{1'780'000'000 + 3600} * systems::ns_per_second;
     };
-    app::FrameStats stats(0.5);
+    systems::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);
     EXPECT_FLOAT_EQ((*engine)->params().get<params::ParamId::display_brightness>(), 0.5f);
 }
@@ -242,9 +242,9 @@ TEST(FrameAllocation, SteadyStateFramesWithRemoteControlAllocateNothing) {
                                  return systems::add_live_tuning(
                                      world, schedule, systems::LiveTuning(params::ParamLayers({}, {})));
                              },
-                             systems::add_puddle_plugin, app::add_remote_plugin});
+                             systems::add_puddle_plugin, systems::add_remote_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
-    const app::RemoteControl& remote = (*engine)->world().resource<app::RemoteControl>();
+    const systems::RemoteControl& remote = (*engine)->world().resource<systems::RemoteControl>();
     for (int n = 0; n < 3000 && remote.connections_seen == 0; ++n) {
         ASSERT_TRUE((*engine)->frame(1.0 / 60.0).ok());
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -254,15 +254,15 @@ TEST(FrameAllocation, SteadyStateFramesWithRemoteControlAllocateNothing) {
         ASSERT_TRUE((*engine)->frame(1.0 / 60.0).ok());
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    app::FrameStats stats(0.5);
+    systems::FrameStats stats(0.5);
     expect_no_allocation_in_frames(**engine, stats);
 }
 
 TEST(FrameAllocation, StatsReportAllocatesNothing) {
-    app::FrameStats stats;
+    systems::FrameStats stats;
     for (int n = 0; n < 500; ++n) stats.add(0.016 + 0.001 * (n % 7), 0.002, 0.001);
     AllocationCount count;
-    const app::FrameStats::Summary s = stats.summary();
+    const systems::FrameStats::Summary s = stats.summary();
     EXPECT_EQ(count.stop(), 0);
     EXPECT_GT(s.p99_ms, s.p50_ms);
 }

@@ -1,6 +1,6 @@
-// The systemd notify protocol (app/service_notify.hpp): READY after the first frame, watchdog pings only
-// while frames are presented, abstract socket names, and nothing at all outside systemd.
-#include "app/service_notify.hpp"
+// The systemd notify protocol (systems/service/service_notify.hpp): READY after the first frame, watchdog
+// pings only while frames are presented, abstract socket names, and nothing at all outside systemd.
+#include "systems/service/service_notify.hpp"
 
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
@@ -34,10 +34,11 @@ TEST(ServiceNotify, AWatchdogPeriodThatIsNoPositiveWholeNumberMeansNoPings) {
     test::ScopedEnv socket("NOTIFY_SOCKET", systemd.path());
     for (const char* bad : {"-5", "0", "2s", "", "1e6", "99999999999999999999999"}) {
         test::ScopedEnv watchdog("WATCHDOG_USEC", bad);
-        EXPECT_EQ(ServiceNotify::from_environment().watchdog_interval(), 0.0) << "WATCHDOG_USEC=" << bad;
+        EXPECT_EQ(systems::ServiceNotify::from_environment().watchdog_interval(), 0.0)
+            << "WATCHDOG_USEC=" << bad;
     }
     test::ScopedEnv watchdog("WATCHDOG_USEC", "250000");
-    EXPECT_DOUBLE_EQ(ServiceNotify::from_environment().watchdog_interval(), 0.25);
+    EXPECT_DOUBLE_EQ(systems::ServiceNotify::from_environment().watchdog_interval(), 0.25);
 }
 
 TEST(ServiceNotify, ReadyAfterTheFirstFrameThenPingsOnlyWhileFramesArePresented) {
@@ -46,7 +47,7 @@ TEST(ServiceNotify, ReadyAfterTheFirstFrameThenPingsOnlyWhileFramesArePresented)
     ASSERT_TRUE(systemd.ok());
     test::ScopedEnv socket("NOTIFY_SOCKET", systemd.path());
     test::ScopedEnv watchdog("WATCHDOG_USEC", "2000000");  // 2 s: a ping every half second while frames flow
-    ServiceNotify n = ServiceNotify::from_environment();
+    systems::ServiceNotify n = systems::ServiceNotify::from_environment();
     ASSERT_TRUE(n.enabled());
     EXPECT_DOUBLE_EQ(n.watchdog_interval(), 2.0);
     EXPECT_TRUE(systemd.received().empty()) << "nothing before a frame was shown";
@@ -83,7 +84,7 @@ TEST(ServiceNotify, AbstractSocketNamesWork) {
                      static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + 1 + name.size())),
               0);
     test::ScopedEnv socket("NOTIFY_SOCKET", "@" + name);
-    ServiceNotify n = ServiceNotify::from_environment();
+    systems::ServiceNotify n = systems::ServiceNotify::from_environment();
     n.frame_presented(1.0);
     char buf[64] = {};
     EXPECT_GT(::recv(fd, buf, sizeof buf - 1, 0), 0);
@@ -93,7 +94,7 @@ TEST(ServiceNotify, AbstractSocketNamesWork) {
 
 TEST(ServiceNotify, NotUnderSystemdEverythingIsANoOp) {
     ::unsetenv("NOTIFY_SOCKET");
-    ServiceNotify n = ServiceNotify::from_environment();
+    systems::ServiceNotify n = systems::ServiceNotify::from_environment();
     EXPECT_FALSE(n.enabled());
     n.frame_presented(1.0);  // must not crash or block
     EXPECT_FALSE(n.enabled());

@@ -1,7 +1,7 @@
-// The service plugin's systems (app/service_plugin.hpp) in a schedule of their own: SIGHUP reaches live
-// tuning as a reload, the watchdog is pinged only after a frame was really presented, and the exit stage
-// says STOPPING=1, each seen on a real notify socket.
-#include "app/service_plugin.hpp"
+// The service plugin's systems (systems/service/service_plugin.hpp) in a schedule of their own: SIGHUP
+// reaches live tuning as a reload, the watchdog is pinged only after a frame was really presented, and the
+// exit stage says STOPPING=1, each seen on a real notify socket.
+#include "systems/service/service_plugin.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "app/signals.hpp"
 #include "params/presets.hpp"
 #include "support/notify_listener.hpp"
 #include "support/test_support.hpp"
@@ -22,6 +23,7 @@ namespace {
 struct Rig {
     test::TempDir dir;
     test::NotifyListener systemd{dir / "notify"};
+    StopSignals signals;  // the program's, as app.cpp hands its reload signal over
     ecs::World world;
     ecs::Schedule schedule;
 
@@ -29,8 +31,8 @@ struct Rig {
         test::ScopedEnv socket("NOTIFY_SOCKET", systemd.path());
         test::ScopedEnv watchdog("WATCHDOG_USEC", "4000");  // pings at most every millisecond
         world.insert_resource<systems::PresentStatus>();
-        auto added = add_service_plugin(world, schedule, std::make_unique<StopSignals>(),
-                                        ServiceNotify::from_environment());
+        auto added = systems::add_service_plugin(world, schedule, {[this] { return signals.take_reload(); }},
+                                                 systems::ServiceNotify::from_environment());
         EXPECT_TRUE(added.ok());
     }
 };
@@ -39,7 +41,7 @@ TEST(ServicePlugin, RegistersItsThreeSystemsInTheirStages) {
     Rig rig;
     EXPECT_EQ(rig.schedule.describe(),
               (std::vector<std::string>{
-                  "input/reload signal (writes StopSignals, TuningInbox)",
+                  "input/reload signal (writes ReloadSignal, TuningInbox)",
                   "present/watchdog ping (reads PresentStatus; writes ServiceNotify)",
                   "exit/service stopping (writes ServiceNotify)",
               }));

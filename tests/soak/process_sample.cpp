@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "app/frame_stats.hpp"
+#include "systems/common/frame_stats.hpp"
 
 namespace puddle::soak {
 
@@ -23,7 +23,7 @@ int count_open_fds() {
 }  // namespace
 
 ProcessSample sample_process() {
-    const app::MemoryStatus m = app::read_memory_status();
+    const systems::MemoryStatus m = systems::read_memory_status();
     return {.rss_kib = m.rss_kib, .peak_kib = m.peak_kib, .open_fds = count_open_fds()};
 }
 

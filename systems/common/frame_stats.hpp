@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <optional>
 
-namespace puddle::app {
+namespace puddle::systems {
 
 // Resident memory of this process from /proc/self/status, in KiB (0 where unreadable).
 struct MemoryStatus {
@@ -56,4 +56,4 @@ private:
     double last_cpu_s_ = 0, last_main_cpu_s_ = 0, window_s_ = 0;
 };
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

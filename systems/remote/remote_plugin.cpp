@@ -1,18 +1,18 @@
-#include "app/remote_plugin.hpp"
+#include "systems/remote/remote_plugin.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <nlohmann/json.hpp>
 
-#include "app/screenshot_jpeg.hpp"
-#include "app/version.hpp"
 #include "remote/discovery.hpp"
 #include "remote/health.hpp"
 #include "remote/state_json.hpp"
+#include "systems/remote/screenshot_jpeg.hpp"
 #include "util/monotonic_clock.hpp"
 #include "util/safe_quote.hpp"
+#include "util/version.hpp"
 
-namespace puddle::app {
+namespace puddle::systems {
 
 using params::ParamId;
 
@@ -216,4 +216,4 @@ Result<void> add_remote_plugin(ecs::World& world, ecs::Schedule& schedule) {
     return {};
 }
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

@@ -7,7 +7,7 @@
 
 #include "assets/image.hpp"
 
-namespace puddle::app {
+namespace puddle::systems {
 
 inline constexpr int screenshot_jpeg_quality = 85;
 
@@ -18,4 +18,4 @@ std::string screenshot_jpeg(const assets::Image& frame, int max_width);
 // it covers).
 std::string scaled_rgb(const assets::Image& frame, int width, int height);
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

@@ -1,11 +1,11 @@
-#include "app/frame_stats.hpp"
+#include "systems/common/frame_stats.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
 
-namespace puddle::app {
+namespace puddle::systems {
 
 namespace {
 
@@ -89,4 +89,4 @@ std::optional<FrameStats::Summary> FrameStats::take_report() {
     return s;
 }
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

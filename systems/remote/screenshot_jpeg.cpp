@@ -1,11 +1,11 @@
-#include "app/screenshot_jpeg.hpp"
+#include "systems/remote/screenshot_jpeg.hpp"
 
 #include <algorithm>
 #include <span>
 
 #include "camera/mjpeg_encoder.hpp"
 
-namespace puddle::app {
+namespace puddle::systems {
 
 std::string scaled_rgb(const assets::Image& frame, int width, int height) {
     std::string rgb(static_cast<std::size_t>(width) * height * 3, '\0');
@@ -39,4 +39,4 @@ std::string screenshot_jpeg(const assets::Image& frame, int max_width) {
     return {reinterpret_cast<const char*>(jpeg.data()), jpeg.size()};
 }
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

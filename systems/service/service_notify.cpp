@@ -1,4 +1,4 @@
-#include "app/service_notify.hpp"
+#include "systems/service/service_notify.hpp"
 
 #include <spdlog/spdlog.h>
 #include <sys/socket.h>
@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string_view>
 
-namespace puddle::app {
+namespace puddle::systems {
 
 ServiceNotify ServiceNotify::from_environment() {
     ServiceNotify n;
@@ -78,4 +78,4 @@ void ServiceNotify::stopping() {
     send("STOPPING=1");
 }
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

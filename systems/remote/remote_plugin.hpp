@@ -17,18 +17,18 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_stats.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
 #include "remote/mqtt_client.hpp"
 #include "remote/remote_settings.hpp"
+#include "systems/common/frame_stats.hpp"
 #include "systems/display/display_plugin.hpp"
 #include "systems/sky/camera_system.hpp"
 #include "systems/tuning/live_tuning.hpp"
 #include "util/background_job.hpp"
 #include "util/result.hpp"
 
-namespace puddle::app {
+namespace puddle::systems {
 
 // Resource.
 struct RemoteControl {
@@ -68,4 +68,4 @@ void remote_publish_system(RemoteControl& remote, const params::Params& params,
 // Errors: remote_settings()'s (a world-readable password file...), exit code 2.
 Result<void> add_remote_plugin(ecs::World& world, ecs::Schedule& schedule);
 
-}  // namespace puddle::app
+}  // namespace puddle::systems

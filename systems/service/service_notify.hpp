@@ -11,7 +11,7 @@
 
 #include "util/unique_fd.hpp"
 
-namespace puddle::app {
+namespace puddle::systems {
 
 class ServiceNotify {
 public:
@@ -39,4 +39,4 @@ private:
     double last_ping_ = -1e9;
 };
 
-}  // namespace puddle::app
+}  // namespace puddle::systems
