@@ -154,6 +154,15 @@ Builder build(const RemoteSettings& s, const std::vector<std::string>& presets, 
         if (*f.device_class) c["device_class"] = f.device_class;
         b.add("sensor", f.key, c);
     }
+    if (sensors.board_power)
+        for (const HealthField& f : health_problem_fields) {
+            json c = b.entity("binary_sensor", f.key, f.name);
+            c["state_topic"] = s.prefix + "/health";
+            c["value_template"] = fmt::format("{{{{ 'ON' if value_json.{} else 'OFF' }}}}", f.key);
+            c["entity_category"] = "diagnostic";
+            c["device_class"] = f.device_class;
+            b.add("binary_sensor", f.key, c);
+        }
     json image = b.entity("image", "screenshot", "Screenshot");
     image["image_topic"] = s.prefix + "/screenshot";
     image["content_type"] = "image/jpeg";
@@ -186,7 +195,8 @@ std::vector<Outbound> discovery_configs(const RemoteSettings& s, const std::vect
 
 std::vector<Outbound> clear_discovery(const RemoteSettings& s, const std::vector<std::string>& presets,
                                       std::string_view version) {
-    std::vector<Outbound> out = discovery_configs(s, presets, version, {.soc_temperature = true});
+    std::vector<Outbound> out =
+        discovery_configs(s, presets, version, {.soc_temperature = true, .board_power = true});
     for (Outbound& o : out) o.payload.clear();
     return out;
 }

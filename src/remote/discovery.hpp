@@ -34,10 +34,12 @@ std::string readable_name(std::string_view key);
 // "Puddle <settings.screen_name>" ("Puddle lobby"), the client id where there is no screen name.
 std::string device_name(const RemoteSettings& settings);
 
-// Which health sensors this screen has: the SoC temperature only where /sys/class/thermal has a zone, so
-// that Home Assistant shows no sensor that stays "unknown".
+// Which health sensors this screen has: the SoC temperature only where /sys/class/thermal has a zone, the
+// power flags only on a Raspberry Pi that reports them, so that Home Assistant shows no sensor that stays
+// "unknown".
 struct HealthSensors {
     bool soc_temperature = false;
+    bool board_power = false;  // under-voltage and throttling (remote/board_power.hpp), as binary sensors
 };
 
 // Every discovery config, retained. `presets`: the preset names the select offers ("none" is added).

@@ -29,6 +29,8 @@ std::string health_document(const Health& h) {
         {"camera_dropped_frames", h.camera_dropped_frames},
     };
     if (h.soc_temperature_c) doc["soc_temperature_c"] = rounded(*h.soc_temperature_c, 1);
+    if (h.undervoltage) doc["undervoltage"] = *h.undervoltage;
+    if (h.throttled) doc["throttled"] = *h.throttled;
     return dump_json(doc);
 }
 

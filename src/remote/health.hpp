@@ -1,8 +1,10 @@
 #pragma once
 // The health message, published every remote.health_interval seconds on <prefix>/health (retained):
 // {"fps": 59.9, "frame_ms_p95": 17.1, "cpu_ms_per_frame": 4.2, "rss_mb": 88.5, "uptime_s": 3600,
-//  "camera_dropped_frames": 0, "soc_temperature_c": 51.2}; soc_temperature_c only where
-// /sys/class/thermal has a zone. Home Assistant's sensors read it with value templates (discovery.hpp).
+//  "camera_dropped_frames": 0, "soc_temperature_c": 51.2, "undervoltage": false, "throttled": false};
+// soc_temperature_c only where /sys/class/thermal has a zone, undervoltage and throttled only on a
+// Raspberry Pi that reports them (remote/board_power.hpp). Home Assistant's sensors read it with value
+// templates (discovery.hpp).
 
 #include <optional>
 #include <string>
@@ -17,6 +19,10 @@ struct Health {
     double uptime_s = 0;
     unsigned long long camera_dropped_frames = 0;
     std::optional<double> soc_temperature_c;
+    // A Raspberry Pi's supply and throttling since the last health message (remote/board_power.hpp); none
+    // on boards that do not report them.
+    std::optional<bool> undervoltage;
+    std::optional<bool> throttled;
 };
 
 std::string health_document(const Health& h);
@@ -40,6 +46,11 @@ inline constexpr HealthField health_fields[] = {
     {"uptime_s", "Uptime", "s", "duration"},
     {"camera_dropped_frames", "Dropped camera frames", "", ""},
     {"soc_temperature_c", "SoC temperature", "°C", "temperature"},
+};
+// The board's power flags as Home Assistant binary sensors (device class "problem": on means trouble).
+inline constexpr HealthField health_problem_fields[] = {
+    {"undervoltage", "Under-voltage", "", "problem"},
+    {"throttled", "Throttled", "", "problem"},
 };
 
 }  // namespace puddle::remote

@@ -87,14 +87,40 @@ void publish_state(RemoteControl& r, const params::Params& params, const systems
     }
 }
 
+// One line when under-voltage or throttling starts, one when a whole health interval was clear of it.
+void log_power_changes(const remote::BoardPower& before, const remote::BoardPower& now) {
+    if (now.undervoltage && *now.undervoltage != before.undervoltage.value_or(false)) {
+        if (*now.undervoltage)
+            spdlog::warn(
+                "power: under-voltage on this board (the firmware's flag): the supply or its cable is too "
+                "weak; use the board's official supply (5.1 V, 3 A for a Pi 4, 5 A for a Pi 5)");
+        else
+            spdlog::info("power: the supply has been steady again for a health interval");
+    }
+    if (now.throttled && *now.throttled != before.throttled.value_or(false)) {
+        if (*now.throttled)
+            spdlog::warn(
+                "power: the board is throttling (frequency capped or at its temperature limit): "
+                "frames may come late; check its cooling and supply");
+        else
+            spdlog::info("power: no throttling for a health interval");
+    }
+}
+
 void publish_health(RemoteControl& r, const FrameStats::Summary& s) {
+    r.board_power.poll();
+    const remote::BoardPower power = r.board_power.take();
+    log_power_changes(r.last_power, power);
+    r.last_power = power;
     remote::Health h{.fps = s.fps,
                      .frame_ms_p95 = s.p95_ms,
                      .cpu_ms_per_frame = s.cpu_ms,
                      .rss_mb = static_cast<double>(read_memory_status().rss_kib) / 1024.0,
                      .uptime_s = monotonic_seconds() - r.started,
                      .camera_dropped_frames = r.camera ? r.camera->faults().dropped : 0,
-                     .soc_temperature_c = remote::soc_temperature_c()};
+                     .soc_temperature_c = remote::soc_temperature_c(),
+                     .undervoltage = power.undervoltage,
+                     .throttled = power.throttled};
     r.client->publish(r.settings.prefix + "/health", remote::health_document(h), true);
 }
 
@@ -165,9 +191,14 @@ void remote_publish_system(RemoteControl& r, const params::Params& params, const
         r.discovery_due = false;
         publish_all(*r.client,
                     remote::discovery_configs(r.settings, tuning.layers.presets().names(), version(),
-                                              {.soc_temperature = remote::soc_temperature_c().has_value()}));
+                                              {.soc_temperature = remote::soc_temperature_c().has_value(),
+                                               .board_power = r.board_power.present()}));
     }
     publish_state(r, params, tuning);
+    if (const double now = monotonic_seconds(); r.board_power.present() && now >= r.next_power_poll) {
+        r.board_power.poll();  // a dip between two health messages is latched, not missed
+        r.next_power_poll = now + 1.0;
+    }
     if (const auto s = r.stats.take_report()) publish_health(r, *s);
 }
 

@@ -19,6 +19,7 @@
 
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
+#include "remote/board_power.hpp"
 #include "remote/mqtt_client.hpp"
 #include "remote/remote_settings.hpp"
 #include "systems/common/frame_stats.hpp"
@@ -44,6 +45,11 @@ struct RemoteControl {
     bool discovery_due = false;
     double started = 0;
     FrameStats stats;
+    // A Raspberry Pi's under-voltage and throttling (remote/board_power.hpp), polled once a second and
+    // reported with each health message; said in the log when it starts and when it ends.
+    remote::BoardPowerWatch board_power;
+    double next_power_poll = 0;
+    remote::BoardPower last_power;
     const systems::CameraFeed* camera = nullptr;  // for the dropped-frame count, when the puddle has one
     bool screenshot_wanted = false;               // a capture was asked for and not yet taken
     // Command topics a retained message was ignored on, said once each (the broker replays it at every

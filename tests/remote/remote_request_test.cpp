@@ -185,7 +185,8 @@ TEST(RemoteState, AnErrorQuotingBytesThatAreNotUtf8IsStillValidJson) {
 
 TEST(Discovery, OneControlPerWritableParameterWithTheRegistrysRange) {
     const RemoteSettings s = settings("rain.*, look.*, overlay.rain");
-    const auto configs = discovery_configs(s, {"downpour", "drizzle"}, "9.9", {.soc_temperature = true});
+    const auto configs =
+        discovery_configs(s, {"downpour", "drizzle"}, "9.9", {.soc_temperature = true, .board_power = true});
     std::size_t params_seen = 0;
     for (const Outbound& o : configs) {
         SCOPED_TRACE(o.topic);
@@ -230,7 +231,8 @@ TEST(Discovery, EveryEntityHasAReadableNameAndBothEntityIdKeys) {
     EXPECT_EQ(device_name(s), "Puddle puddle-Lobby.2") << "no screen name: the client id";
     s.screen_name = "lobby";
     std::map<std::string, std::string> names;  // default_entity_id -> name
-    for (const Outbound& o : discovery_configs(s, {"downpour"}, "9.9", {.soc_temperature = true})) {
+    for (const Outbound& o :
+         discovery_configs(s, {"downpour"}, "9.9", {.soc_temperature = true, .board_power = true})) {
         SCOPED_TRACE(o.topic);
         const auto c = nlohmann::json::parse(o.payload);
         const std::string component = o.topic.substr(14, o.topic.find('/', 14) - 14);
@@ -252,6 +254,8 @@ TEST(Discovery, EveryEntityHasAReadableNameAndBothEntityIdKeys) {
     EXPECT_EQ(names["select.puddle_lobby_2_scene_kind"], "Scene kind");
     EXPECT_EQ(names["sensor.puddle_lobby_2_soc_temperature_c"], "SoC temperature");
     EXPECT_EQ(names["image.puddle_lobby_2_screenshot"], "Screenshot");
+    EXPECT_EQ(names["binary_sensor.puddle_lobby_2_undervoltage"], "Under-voltage");
+    EXPECT_EQ(names["binary_sensor.puddle_lobby_2_throttled"], "Throttled");
     EXPECT_EQ(readable_name("overlay.rain"), "Overlay rain");
 }
 
@@ -270,6 +274,37 @@ TEST(Discovery, TheTemperatureSensorOnlyWhereThereIsAThermalZone) {
     EXPECT_FALSE(has_temperature(without));
     EXPECT_EQ(with.size(), without.size() + 1);
     EXPECT_TRUE(has_temperature(clear_discovery(s, {}, "9.9")));
+}
+
+// A Raspberry Pi's under-voltage and throttling are binary sensors ("problem": on is trouble) read from the
+// health message, announced only on a board that reports them; clearing removes them either way.
+TEST(Discovery, ThePowerSensorsOnlyOnABoardThatReportsThem) {
+    const RemoteSettings s = settings("rain.*");
+    const auto power_sensors = [](const std::vector<Outbound>& out) {
+        std::vector<nlohmann::json> found;
+        for (const Outbound& o : out)
+            if (o.topic.starts_with("homeassistant/binary_sensor/") && !o.payload.empty())
+                found.push_back(nlohmann::json::parse(o.payload));
+        return found;
+    };
+    const auto with = discovery_configs(s, {}, "9.9", {.board_power = true});
+    const auto without = discovery_configs(s, {}, "9.9", {});
+    EXPECT_EQ(with.size(), without.size() + 2);
+    EXPECT_TRUE(power_sensors(without).empty());
+    const auto sensors = power_sensors(with);
+    ASSERT_EQ(sensors.size(), 2u);
+    for (const auto& c : sensors) {
+        EXPECT_EQ(c["device_class"], "problem");
+        EXPECT_EQ(c["state_topic"], "puddle/a1/health");
+        EXPECT_EQ(c["entity_category"], "diagnostic");
+    }
+    EXPECT_EQ(sensors[0]["value_template"], "{{ 'ON' if value_json.undervoltage else 'OFF' }}");
+    EXPECT_EQ(sensors[1]["value_template"], "{{ 'ON' if value_json.throttled else 'OFF' }}");
+    const auto cleared = clear_discovery(s, {}, "9.9");
+    EXPECT_EQ(
+        std::count_if(cleared.begin(), cleared.end(),
+                      [](const Outbound& o) { return o.topic.starts_with("homeassistant/binary_sensor/"); }),
+        2);
 }
 
 }  // namespace
