@@ -148,11 +148,19 @@ std::optional<std::string> wall_timing_problem(const params::Params& params) {
             "the ripples will not run on from one screen to the next; set [wall] clock = \"realtime\" on "
             "every screen (docs/video-walls.md, \"One clock for every screen\")",
             screens);
-    if (realtime && params.get<ParamId::wave_damping>() >= 1.0f)
+    // Each wave model forgets how it started only through its own damping: wave.damping for the
+    // reference's equation, wave.drag (every wavelength alike) for the capillary one, whose viscosity
+    // hardly touches the long waves.
+    const bool capillary = params.get<ParamId::wave_model>() == params::WaveModel::capillary;
+    if (realtime && !capillary && params.get<ParamId::wave_damping>() >= 1.0f)
         return std::string(
             "wall.clock = \"realtime\" with wave.damping = 1: an undamped field never forgets how it "
-            "started, "
-            "so screens that joined at different times never match; use a wave.damping below 1 (0.985 is the "
+            "started, so screens that joined at different times never match; use a wave.damping below 1 "
+            "(0.985 is the default)");
+    if (realtime && capillary && params.get<ParamId::wave_drag>() <= 0.0f)
+        return std::string(
+            "wall.clock = \"realtime\" with wave.drag = 0: the capillary field's long waves never fade, so "
+            "screens that joined at different times never match; use a wave.drag above 0 (1.5 /s is the "
             "default)");
     return std::nullopt;
 }

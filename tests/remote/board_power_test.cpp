@@ -72,10 +72,10 @@ TEST(BoardPower, TheFirmwareFlagsDecodeAsVcgencmdDocumentsThem) {
     EXPECT_EQ(decode_throttled(0x0).throttled, false);
     EXPECT_EQ(decode_throttled(0x1).undervoltage, true);
     EXPECT_EQ(decode_throttled(0x1).throttled, false);
-    EXPECT_EQ(decode_throttled(0x4).throttled, true);                   // throttled now
-    EXPECT_EQ(decode_throttled(0x8).throttled, true);                   // soft temperature limit
-    EXPECT_EQ(decode_throttled(0x10000).undervoltage, true);            // has occurred
-    EXPECT_EQ(decode_throttled(0x40000).throttled, true);               // throttling has occurred
+    EXPECT_EQ(decode_throttled(0x4).throttled, true);         // throttled now
+    EXPECT_EQ(decode_throttled(0x8).throttled, true);         // soft temperature limit
+    EXPECT_EQ(decode_throttled(0x10000).undervoltage, true);  // has occurred
+    EXPECT_EQ(decode_throttled(0x40000).throttled, true);     // throttling has occurred
     EXPECT_EQ(decode_throttled(0x50005).undervoltage, true);
 }
 

@@ -279,7 +279,14 @@ TEST(WallTimingProblem, AWallOnTheFrameClockOrAnUndampedRealtimeFieldIsNamed) {
     EXPECT_NE(frame->find("a wall of 4 screens with wall.clock = \"frame\""), std::string::npos) << *frame;
     p.set<ParamId::wall_clock>(params::WallClockMode::realtime, ParamSource::Config);
     EXPECT_EQ(wall_timing_problem(p), std::nullopt);
+    // The capillary field (the default) forgets through wave.drag; wave.damping is the reference's.
     p.set<ParamId::wave_damping>(1.0f, ParamSource::Config);
+    EXPECT_EQ(wall_timing_problem(p), std::nullopt) << "wave.damping does not act on the capillary field";
+    p.set<ParamId::wave_drag>(0.0f, ParamSource::Config);
+    const auto no_drag = wall_timing_problem(p);
+    ASSERT_TRUE(no_drag.has_value());
+    EXPECT_NE(no_drag->find("wave.drag = 0"), std::string::npos) << *no_drag;
+    p.set<ParamId::wave_model>(params::WaveModel::reference, ParamSource::Config);
     const auto undamped = wall_timing_problem(p);
     ASSERT_TRUE(undamped.has_value());
     EXPECT_NE(undamped->find("wave.damping = 1"), std::string::npos) << *undamped;
