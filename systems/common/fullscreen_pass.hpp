@@ -9,6 +9,7 @@
 #include "params/param_store.hpp"
 #include "render/param_uniforms.hpp"
 #include "render/pipeline_cache.hpp"
+#include "systems/common/looks.hpp"
 #include "systems/common/render_target.hpp"
 #include "util/result.hpp"
 
@@ -45,5 +46,12 @@ struct FullscreenPass {
         pass.draw_fullscreen();
     }
 };
+
+// The Looks entry of a scene drawn by `pass` alone (the ocean, the street): its pass is all it builds.
+inline LookEntry fullscreen_look(Scene scene, FullscreenPass& pass) {
+    return {.scene = scene,
+            .prepare = [&pass](gpu::Device& d) { return pass.prepare(d); },
+            .request = [&pass](gpu::Device& d) { return pass.request(d); }};
+}
 
 }  // namespace puddle::systems

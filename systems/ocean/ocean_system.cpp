@@ -50,10 +50,7 @@ void ocean_system(gpu::Device& device, const params::Params& params, const Frame
 
 void add_ocean_plugin(ecs::World& world, ecs::Schedule& schedule) {
     auto& ocean = world.insert_resource<OceanRenderer>();
-    world.resource<Looks>().entries.push_back(
-        {.scene = Scene::ocean,
-         .prepare = [&ocean](gpu::Device& d) { return ocean.pass.prepare(d); },
-         .request = [&ocean](gpu::Device& d) { return ocean.pass.request(d); }});
+    world.resource<Looks>().entries.push_back(fullscreen_look(Scene::ocean, ocean.pass));
     schedule.add(ecs::Stage::Render, "ocean", ocean_system).run_if(look_is(Scene::ocean)).run_if(output_on());
 }
 

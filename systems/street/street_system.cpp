@@ -82,10 +82,7 @@ void street_system(gpu::Device& device, const params::Params& params, const Fram
 
 void add_street_plugin(ecs::World& world, ecs::Schedule& schedule) {
     auto& street = world.insert_resource<StreetRenderer>();
-    world.resource<Looks>().entries.push_back(
-        {.scene = Scene::street,
-         .prepare = [&street](gpu::Device& d) { return street.pass.prepare(d); },
-         .request = [&street](gpu::Device& d) { return street.pass.request(d); }});
+    world.resource<Looks>().entries.push_back(fullscreen_look(Scene::street, street.pass));
     schedule.add(ecs::Stage::Render, "street", street_system)
         .run_if(look_is(Scene::street))
         .run_if(output_on());
