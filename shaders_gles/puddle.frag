@@ -16,6 +16,8 @@
 //   GROUND_HIDDEN:   turbidity is so high that no ground can show through: no refraction at all.
 //   ENV_RGBM:        the cube holds RGBM texels (no half-float render targets).
 //   TONEMAP:         the look.tonemap operator, a TONEMAP_* constant of colour.glsl.
+//   CLOUD_LAYER:     the cube is the procedural sky without its clouds, its alpha how much cloud may cover
+//                    each texel; the drifting layer (u_clouds) is laid over it (assets/cloud_layer.hpp).
 // The displacement is tiny next to the box, so both methods find the same point (a test compares the pictures).
 precision highp float;
 
@@ -28,6 +30,7 @@ out vec4 o_color;
 uniform sampler2D u_surface;   // height, hL - hR, hD - hU (surface.frag)
 uniform samplerCube u_env;     // linear radiance: sRGB8 decoded by the sampler, half float, or RGBM
 uniform sampler2D u_ground;    // sRGB: sampled as linear
+uniform sampler2D u_clouds;    // CLOUD_LAYER: cloud coverage in R, one tile of the deck, repeating
 
 // Camera and everything else uniform across the screen, computed once per frame on the CPU.
 uniform vec3 u_camera_position;
@@ -37,6 +40,12 @@ uniform vec3 u_cam_up;
 uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1), of the whole view (v_uv spans it)
 uniform mat3 u_env_matrix;     // rotation about +Y by environment.rotation
 uniform float u_env_scale;     // 2^environment.exposure
+uniform vec2 u_cloud_offset;   // CLOUD_LAYER: how far the clouds have drifted, in tiles
+uniform float u_cloud_scale;   // 1 / deck units a tile spans
+uniform vec3 u_cloud_base;     // cloud undersides lit by the city (linear radiance)
+uniform vec3 u_cloud_top;      // clouds overhead
+uniform vec3 u_cloud_halo;     // silver added near the moon
+uniform vec3 u_moon_direction;
 uniform vec4 u_surface_map;    // surface uv = xz * map.xy + map.zw: the puddle once, or a capillary tile repeated
 uniform vec2 u_slope_scale;    // world slope per unit of height difference (hR - hL, hU - hD) in world units:
                                // texels per world unit / 2
@@ -60,20 +69,34 @@ uniform float u_reflect_gain;      // SHORE: mix(0.3, 0.8, water.reflectivity) -
 
 const float IOR = 1.333;
 
-vec3 surface_at(vec2 xz) {
+// Height, its differences and (alpha) the splashes there.
+vec4 surface_at(vec2 xz) {
     vec2 uv = xz * u_surface_map.xy + u_surface_map.zw;
-    return decode_surface(texture(u_surface, uv).rgb);
+    vec4 texel = texture(u_surface, uv);
+    return vec4(decode_surface(texel.rgb), texel.a);
 }
 
 float top() { return 0.5 * u_puddle_size.y; }
 
 // bias: mip levels coarser than the footprint asks for, a rough surface's blur (0: a mirror).
 vec3 environment(vec3 dir, float bias) {
-    vec4 texel = texture(u_env, u_env_matrix * dir, bias);
+    vec3 e = u_env_matrix * dir;
+    vec4 texel = texture(u_env, e, bias);
 #ifdef ENV_RGBM
     return decode_rgbm(texel) * u_env_scale;
 #else
-    return texel.rgb * u_env_scale;
+    vec3 sky = texel.rgb;
+#ifdef CLOUD_LAYER
+    // Where the ray meets a flat deck one unit up (cloud_layer_uv), the layer drifted; darker on top,
+    // lit from below toward the horizon, silver by the moon.
+    float up = max(e.y, 0.0);
+    vec2 deck = e.xz * (u_cloud_scale / (up + 0.1)) + u_cloud_offset;
+    float cover = texture(u_clouds, deck, bias).r * texel.a;
+    vec3 cloud = mix(u_cloud_top, u_cloud_base, exp(-4.0 * up)) +
+                 u_cloud_halo * exp(-distance(e, u_moon_direction) * 8.3);
+    sky = mix(sky, cloud, cover);
+#endif
+    return sky * u_env_scale;
 #endif
 }
 
@@ -103,7 +126,7 @@ float water_sdf(vec3 p) {
     return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
 }
 
-bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
+bool hit_water(vec3 o, vec3 d, out vec3 p, out vec4 s) {
     float t;
     vec3 bound = 0.5 * u_puddle_size + vec3(0.0, 4.0 * u_height_units, 0.0);  // widened by the displacement
     if (!enter_box(o, d, bound, t)) return false;
@@ -121,7 +144,7 @@ bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
 // Meet the flat top, read the surface there once, and step to where the plane through that texel's
 // height, tilted by its slopes, meets the ray (one Newton step on the height; the displacement is a
 // fraction of a unit, so one step lands on it). The same texel gives the normal.
-bool hit_water(vec3 o, vec3 d, out vec3 p, out vec3 s) {
+bool hit_water(vec3 o, vec3 d, out vec3 p, out vec4 s) {
     float down = min(d.y, -1e-4);
     p = o + ((top() - o.y) / down) * d;
 #ifdef SHORE
@@ -216,14 +239,15 @@ void main() {
     float blur = 0.0;        // how rough the reflecting surface is (environment's bias)
     vec3 own = vec3(0.0);    // the surface's own light: ground and tint
     float fog_keep = 1.0;    // the sky beyond the puddle is at infinity, unfogged
-    vec3 p, s;
+    vec3 p;
+    vec4 s;
     bool water = hit_water(o, d, p, s);
     // A pixel that misses still runs the water's code where the GPU masks instead of branching (llvmpipe
     // always; a GPU where neighbouring pixels disagree): give it a harmless point on the water, or its
     // ground read at an unbounded place costs a thousand times a normal one (measured on llvmpipe).
     if (!water) {
         p = vec3(0.0, top(), 0.0);
-        s = vec3(0.0);
+        s = vec4(0.0);
     }
 #ifdef SHORE
     const float f0 = 0.020373;  // ((1 - IOR) / (1 + IOR))^2
@@ -255,6 +279,12 @@ void main() {
         own = stones * mix(0.45, 0.22, wet) * (1.0 - sky_share);
     }
     if (plane) look = reflect(d, n);
+    // A splash's droplets mirror the scene all around them: they show the bright band over the city,
+    // blurred, where the water showed the reflection of one direction.
+    float splash = water ? s.a : 0.0;
+    look = normalize(mix(look, vec3(d.x, 0.08, d.z), splash));
+    sky_share = mix(sky_share, 1.0, 0.8 * splash);
+    blur += 3.0 * splash;
     vec3 colour = own + sky_share * environment(look, blur);
     // The distance dissolves into the night's haze rather than ending at an edge.
     if (plane) colour = mix(u_look_haze_color, colour, exp(-distance(o, p) * u_look_fog_density));

@@ -72,11 +72,8 @@ uniform vec4 u_step;        // a, b, v, keep (systems/water/capillary_step.hpp)
 uniform float u_level;      // w0^2 dt^2: the pull back to the water's level
 uniform vec4 u_drop_shape;  // texel size in mm, drop gain (height units per pass at the peak), seconds this
                             // pass ends before the step (<= 0, added to u_drops' ages), 0
-uniform vec4 u_rain;        // cells per side, texels per cell, chance of a drop per cell and slot, Marshall-Palmer slope (1/mm)
-uniform int u_slot;         // the rain's time slot (RAIN_SLOT seconds each), wrapped to 2^20
-uniform float u_slot_time;  // seconds into it
 
-const float RAIN_SLOT = 0.25;  // seconds; a drop's impulse (at most 0.22 s) spans at most two slots
+#include "rain_impacts.glsl"
 
 ivec2 n_texels;
 vec2 at(ivec2 p) { return load((p + n_texels) % n_texels); }  // periodic; p is at most 2 texels outside
@@ -98,29 +95,15 @@ float impulse(float r, float d, float t) {
     return u_drop_shape.y * size * sqrt(size) * space * window * window * sin(6.2831853 * f * t);
 }
 
-// A Marshall-Palmer diameter from 1 to 4 mm (an exponential of slope u_rain.w, truncated) for u in 0..1.
-float drop_diameter(float u) {
-    float lambda = u_rain.w;
-    return 1.0 - log(1.0 - u * (1.0 - exp(-3.0 * lambda))) / lambda;
-}
-
 float rain(vec2 p) {
-    float cells = u_rain.x, cell_texels = u_rain.y;
-    vec2 c = p / cell_texels - 0.5;  // the 2x2 cells whose drops can reach p (a drop reaches half a cell)
-    ivec2 c0 = ivec2(floor(c));
+    ivec2 c0 = rain_cells_near(p);
     float sum = 0.0;
     for (int k = 0; k < 2; ++k) {
-        uint slot = uint(u_slot - k) & 0xfffffu;
-        float since_slot = u_slot_time + float(k) * RAIN_SLOT;
         for (int j = 0; j < 4; ++j) {
-            ivec2 cell = c0 + ivec2(j & 1, j >> 1);
-            ivec2 wrapped = (cell + int(cells)) % int(cells);
-            uint h = hash3(uint(wrapped.x), uint(wrapped.y), slot);
-            if (unit_float(h) >= u_rain.z) continue;
-            uint h2 = mix_bits(h + 1u), h3 = mix_bits(h + 2u), h4 = mix_bits(h + 3u), h5 = mix_bits(h + 4u);
-            vec2 spot = (vec2(cell) + vec2(unit_float(h2), unit_float(h3))) * cell_texels;
-            float t = since_slot - unit_float(h4) * RAIN_SLOT;
-            sum += impulse(distance(p, spot), drop_diameter(unit_float(h5)), t);
+            vec2 spot;
+            float age, diameter;
+            if (rain_impact(c0 + ivec2(j & 1, j >> 1), k, RAIN_SLOT, spot, age, diameter))
+                sum += impulse(distance(p, spot), diameter, age);
         }
     }
     return sum;

@@ -66,12 +66,14 @@ Result<EnvironmentImages> load_single_image(const std::string& path) {
 
 }  // namespace
 
-Result<EnvironmentImages> load_environment_images(const std::string& spec, int procedural_face_size) {
+Result<EnvironmentImages> load_environment_images(const std::string& spec, int procedural_face_size,
+                                                  SkyClouds procedural_clouds) {
     EnvironmentImages env;
     Result<CubeImages> cube = CubeImages{};
     std::error_code ec;
     if (spec.empty()) {
-        cube = night_sky_cubemap(std::clamp(procedural_face_size, 1, procedural_sky_max_face_size));
+        cube = night_sky_cubemap(std::clamp(procedural_face_size, 1, procedural_sky_max_face_size), 7,
+                                 procedural_clouds);
     } else if (spec.find('|') != std::string::npos) {
         auto paths = split_six(spec);
         if (!paths) return paths.error();

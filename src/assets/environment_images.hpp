@@ -25,7 +25,9 @@ struct EnvironmentImages {
 
 // Empty `spec`: the procedural night sky, made with faces of `procedural_face_size` (clamped to 1 to
 // procedural_sky_max_face_size).
+// procedural_clouds: whether the procedural sky's clouds are baked in or left to the drifting layer.
 Result<EnvironmentImages> load_environment_images(const std::string& spec,
-                                                  int procedural_face_size = procedural_sky_face_size);
+                                                  int procedural_face_size = procedural_sky_face_size,
+                                                  SkyClouds procedural_clouds = SkyClouds::baked);
 
 }  // namespace puddle::assets

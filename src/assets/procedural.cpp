@@ -6,6 +6,7 @@
 #include <thread>
 #include <vector>
 
+#include "assets/cloud_layer.hpp"
 #include "assets/procedural_city.hpp"
 #include "assets/procedural_shading.hpp"
 
@@ -75,12 +76,16 @@ Vec3 sky(const Scene& s, Vec3 d, float glow) {
     return c + s.pal.band * (0.5f * std::exp(-up * 25.0f) * glow);
 }
 
-// Clouds on a flat layer above the viewer, so they shrink with perspective towards the horizon.
-float cloud_density(const Scene& s, Vec3 d) {
+// How much a cloud may cover the sky in direction d: none at the horizon, where the deck is too far to
+// see, rising to 0.85 from about 7 degrees up (the layer's own coverage multiplies it).
+float cloud_fade(Vec3 d) {
+    return smoothstep(0.01f, 0.12f, d.y) * 0.85f;
+}
+
+float cloud_density(const Image& layer, Vec3 d) {
     if (d.y < 0.01f) return 0.0f;
-    const float k = 1.0f / (d.y + 0.1f);
-    const float n = fbm(d.x * k * 1.1f + 3.0f, d.z * k * 1.1f - 7.0f, s.key ^ 0xc10dU);
-    return smoothstep(0.45f, 0.75f, n) * smoothstep(0.01f, 0.12f, d.y) * 0.85f;
+    const auto uv = cloud_layer_uv(d.x, d.y, d.z);
+    return cloud_coverage(layer, uv[0], uv[1]) * cloud_fade(d);
 }
 
 Vec3 clouds_over(const Scene& s, Vec3 d, Vec3 c, float density, float glow, float moon_near) {
@@ -140,8 +145,11 @@ Vec3 moon(const Scene& s, Vec3 d, float cloud, float& near_out) {
     return c;
 }
 
-Vec3 shade(const Scene& s, int face, float sc, float tc) {
+// The colour of direction d, and in `cloud_room` how much a drifting cloud layer may cover it there.
+// `layer` given: the clouds are drawn in (baked); none: they are left to the layer.
+Vec3 shade(const Scene& s, const Image* layer, int face, float sc, float tc, float& cloud_room) {
     const Vec3 d = normalize(face_direction(face, sc, tc));
+    cloud_room = 0.0f;
     const float glow = city_glow(s, d);
 
     Vec3 c;
@@ -151,7 +159,8 @@ Vec3 shade(const Scene& s, int face, float sc, float tc) {
         if (d.y > 0.2f)
             c = c + stars(s, face, sc, tc) * (smoothstep(0.21f, 0.34f, d.y) * (1.0f - 0.5f * glow));
         float moon_near = 0.0f;
-        const float density = cloud_density(s, d);
+        const float density = layer ? cloud_density(*layer, d) : 0.0f;
+        cloud_room = cloud_fade(d);
         Vec3 m = moon(s, d, density, moon_near);
         c = c + m;
         if (density > 0.0f) c = clouds_over(s, d, c, density, glow, moon_near);
@@ -160,24 +169,40 @@ Vec3 shade(const Scene& s, int face, float sc, float tc) {
     if (d.y < 0.87f) {
         const float az = std::atan2(d.x, -d.z);  // 0 towards -Z, increasing towards +X
         const float az_deg = (az < 0.0f ? az + 2.0f * kPi : az) / kDeg;
-        c = city::city(s.city, d, std::min(az_deg, 359.999f), c, glow);
+        float open_sky = 0.0f;
+        c = city::city(s.city, d, std::min(az_deg, 359.999f), c, glow, open_sky);
+        cloud_room *= open_sky;
     }
     return c;
 }
 
-}  // namespace
-
-CubeImages night_sky_cubemap(int face_size, std::uint64_t seed) {
-    const int n = std::max(face_size, 1);
+Scene night_scene(std::uint64_t seed) {
     Scene s;
     s.key = hash(static_cast<std::uint32_t>(seed), hash(static_cast<std::uint32_t>(seed >> 32)));
-    s.face_pix = 2.0f / static_cast<float>(n);
     // The moon sits 35 degrees up towards -X, where the default camera sees the puddle reflect the sky.
-    const float moon_az_deg = 260.0f + 20.0f * unit(hash(s.key, 5U));
-    const float moon_az = moon_az_deg * kDeg;
-    const float moon_el = 35.0f * kDeg;
+    s.city.moon_az_deg = 260.0f + 20.0f * unit(hash(s.key, 5U));
+    s.city.moon_el_deg = 35.0f;
+    const float moon_az = s.city.moon_az_deg * kDeg, moon_el = s.city.moon_el_deg * kDeg;
     s.moon_dir = {std::cos(moon_el) * std::sin(moon_az), std::sin(moon_el),
                   -std::cos(moon_el) * std::cos(moon_az)};
+    return s;
+}
+
+}  // namespace
+
+CloudLight night_sky_cloud_light(std::uint64_t seed) {
+    const Scene s = night_scene(seed);
+    const auto rgb = [](Vec3 v) { return std::array<float, 3>{v.x, v.y, v.z}; };
+    return {.base = rgb(s.pal.cloud_low),
+            .top = rgb(s.pal.cloud_high),
+            .moon_halo = rgb(s.pal.moon_halo * 0.6f),
+            .moon_direction = rgb(s.moon_dir)};
+}
+
+CubeImages night_sky_cubemap(int face_size, std::uint64_t seed, SkyClouds clouds) {
+    const int n = std::max(face_size, 1);
+    Scene s = night_scene(seed);
+    s.face_pix = 2.0f / static_cast<float>(n);
     const float phase1 = 2.0f * kPi * unit(hash(s.key, 6U)), phase2 = 2.0f * kPi * unit(hash(s.key, 7U));
     s.glow_c1 = std::cos(phase1);
     s.glow_s1 = std::sin(phase1);
@@ -185,10 +210,12 @@ CubeImages night_sky_cubemap(int face_size, std::uint64_t seed) {
     s.glow_s2 = std::sin(phase2);
     s.city = {.key = s.key,
               .pix_rad = 0.5f * kPi / static_cast<float>(n),
-              .moon_az_deg = moon_az_deg,
-              .moon_el_deg = moon_el / kDeg,
+              .moon_az_deg = s.city.moon_az_deg,
+              .moon_el_deg = s.city.moon_el_deg,
               .haze = s.pal.horizon,
               .band = s.pal.band};
+    const Image layer = cloud_layer_image(seed);
+    const Image* baked = clouds == SkyClouds::baked ? &layer : nullptr;
 
     CubeImages cube;
     cube.source = "procedural night sky";
@@ -198,12 +225,13 @@ CubeImages night_sky_cubemap(int face_size, std::uint64_t seed) {
             const float tc = 2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(n) - 1.0f;
             for (int x = 0; x < n; ++x) {
                 const float sc = 2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(n) - 1.0f;
-                const Vec3 c = shade(s, face, sc, tc);
+                float cloud_room = 0.0f;
+                const Vec3 c = shade(s, baked, face, sc, tc, cloud_room);
                 float* p = img.pixelf(x, y);
                 p[0] = c.x;
                 p[1] = c.y;
                 p[2] = c.z;
-                p[3] = 1.0f;
+                p[3] = baked ? 1.0f : cloud_room;
             }
         }
         cube.faces[static_cast<std::size_t>(face)] = std::move(img);

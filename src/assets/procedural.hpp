@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "assets/cloud_layer.hpp"
 #include "assets/image.hpp"
 
 namespace puddle::assets {
@@ -13,7 +14,14 @@ namespace puddle::assets {
 // horizon the paved street lit by lamps (procedural_city.hpp). Linear radiance, RGBA32F faces in GL order;
 // windows, lamps and the moon reach 1.5 to 8 (HDR: they glint after tone mapping). Each texel is shaded
 // once with a fixed amount of work (O(face_size^2)); the faces render on six threads where there are any.
-CubeImages night_sky_cubemap(int face_size, std::uint64_t seed = 7);
+// SkyClouds::baked: the clouds (cloud_layer_image, undrifted) are drawn into the faces, alpha 1;
+// SkyClouds::drifting: they are left out, and alpha holds how much the drifting layer may cover each
+// texel (cloud_layer.hpp).
+enum class SkyClouds { baked, drifting };
+CubeImages night_sky_cubemap(int face_size, std::uint64_t seed = 7, SkyClouds clouds = SkyClouds::baked);
+
+// The light the drifting cloud layer is drawn in, matching the cube of the same seed.
+CloudLight night_sky_cloud_light(std::uint64_t seed = 7);
 
 // The face size the procedural sky is made at when environment.face_size is 0 (sharp enough for a 1080p
 // screen: the puddle magnifies the reflected sky), and the most it is made at (six float faces of 1024

@@ -297,6 +297,36 @@ Vec3 facade_signs(const Facade& f, float u, float above, float width, float du, 
     return c;
 }
 
+// How a lit window's light falls across it, 0 to 1, at (x, y) in its cell (fractions, y up): brightest
+// under the ceiling's lights, dimmer toward the sill; split into panes by dark mullions; in some a blind
+// drawn part-way down, in some a dark shape (furniture, a person) against the light. No two windows of a
+// floor look alike, so the grid does not read as a pattern.
+float window_interior(const Facade& f, std::uint32_t wh, float cell_x, float cell_y, float du, float dh) {
+    const float gap_w = 0.5f * (f.col_w - f.win_w), gap_h = 0.45f * (f.row_h - f.win_h);
+    const float x = (cell_x * f.col_w - gap_w) / f.win_w, y = (cell_y * f.row_h - gap_h) / f.win_h;
+    const float ax = du / f.win_w, ay = dh / f.win_h;  // a texel, in window fractions
+    float light = 0.45f + 0.55f * clamp01(y);
+    // Panes a unit or so wide (ribbon windows have many); a mullion is a tenth of a unit.
+    const float panes = std::max(1.0f, std::round(f.win_w / 1.0f));
+    if (panes > 1.0f) {
+        const float px = x * panes - std::floor(x * panes);
+        const float bar = 0.05f * panes / f.win_w;
+        light *= 1.0f - 0.85f * (1.0f - cover(px, bar, 1.0f - bar, ax * panes));
+    }
+    const std::uint32_t b = hash(wh, 25U);
+    if (unit(b) < 0.3f) {  // a blind: the light through it softer and warmer-looking, dimmer
+        const float edge = 0.35f + 0.55f * unit(hash(b, 1U));
+        light *= 1.0f - 0.6f * clamp01((y - edge) / ay + 0.5f);
+    }
+    const std::uint32_t s = hash(wh, 26U);
+    if (unit(s) < 0.22f) {  // a dark shape low in the window
+        const float x0 = 0.1f + 0.6f * unit(hash(s, 1U)), w = 0.15f + 0.25f * unit(hash(s, 2U));
+        const float top = 0.25f + 0.35f * unit(hash(s, 3U));
+        light *= 1.0f - 0.75f * cover(x, x0, x0 + w, ax) * clamp01((top - y) / ay + 0.5f);
+    }
+    return light;
+}
+
 // The facade at horizontal position u and height h (units; the street is at h = -kEye); u_local is u
 // from the facade's left edge, `width` its width. du, dh: a texel's size there, for antialiasing. A unit is
 // the eye's height (about 1.6 m), so a storey (row_h) of 1.6 to 2.2 units is 2.6 to 3.5 m.
@@ -337,8 +367,9 @@ Vec3 facade_colour(const CityView& v, const Facade& f, float u, float u_local, f
         return c + Vec3{0.012f, 0.014f, 0.024f} * m;  // dark glass: a little sky in it
     const float gain =
         unit(hash(wh, 23U)) < 0.25f ? 0.3f : 1.2f + 2.5f * unit(hash(wh, 24U));  // some curtained
-    const Vec3 colour = unit(hash(wh, 22U)) < f.cool_share ? f.cool : f.warm;
-    return c + colour * (m * gain);
+    const Vec3 colour =
+        (unit(hash(wh, 22U)) < f.cool_share ? f.cool : f.warm) * (0.8f + 0.4f * unit(hash(wh, 28U)));
+    return c + colour * (m * gain * window_interior(f, wh, fu - cu, fh - ch, du, dh));
 }
 
 // The street below the horizon where no facade stands: wet paving lit by lamp pools and the city's glow,
@@ -389,7 +420,8 @@ Vec3 street(const CityView& v, Vec3 d, float glow) {
 
 }  // namespace
 
-Vec3 city(const CityView& v, Vec3 d, float az_deg, Vec3 sky, float glow) {
+Vec3 city(const CityView& v, Vec3 d, float az_deg, Vec3 sky, float glow, float& open_sky) {
+    open_sky = 0.0f;
     const float el = std::asin(std::clamp(d.y, -1.0f, 1.0f));
     const float horiz = std::sqrt(d.x * d.x + d.z * d.z);
     // A texel spans more azimuth towards the poles.
@@ -421,6 +453,7 @@ Vec3 city(const CityView& v, Vec3 d, float az_deg, Vec3 sky, float glow) {
     Vec3 behind;
     if (d.y >= 0.0f) {
         behind = sky;
+        open_sky = 1.0f - m;
         const float el_deg = el / kDeg;
         if (el_deg < 9.0f)
             behind = far_skyline(v, behind, az_deg, el_deg, glow) + far_street_lights(v, az_deg, el_deg);

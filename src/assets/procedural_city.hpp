@@ -24,7 +24,8 @@ struct CityView {
 
 // The city along the unit direction d at azimuth az_deg (0 towards -Z, increasing towards +X, 0 to 360),
 // drawn over `sky` (what is behind it); `glow` is the city's brightness in this direction (about 0.5 to
-// 1.2).
-shading::Vec3 city(const CityView& view, shading::Vec3 d, float az_deg, shading::Vec3 sky, float glow);
+// 1.2). open_sky: the share of the result that is `sky` (0 where a building or the street is in front).
+shading::Vec3 city(const CityView& view, shading::Vec3 d, float az_deg, shading::Vec3 sky, float glow,
+                   float& open_sky);
 
 }  // namespace puddle::assets::city

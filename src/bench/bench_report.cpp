@@ -86,9 +86,10 @@ void print_summary(const Collector& c) {
 namespace {
 
 // The render shader's estimated per-pixel cost for one method: the variant the default parameters select
-// (render/puddle_variant.hpp), with the default march steps.
+// (render/puddle_variant.hpp) under the procedural sky with its drifting clouds, with the default march
+// steps.
 bench::ShaderCost shader_cost(params::RenderMethod method) {
-    render::PuddleVariant v = render::choose_puddle_variant(Params{}, false);
+    render::PuddleVariant v = render::choose_puddle_variant(Params{}, false, true);
     v.raymarch = method == params::RenderMethod::raymarch;
     auto shader = gpu::assemble_shader("puddle.frag", render::variant_defines(v, false));
     if (!shader) return {};

@@ -63,7 +63,8 @@ void bench_render(benchmark::State& state, glm::ivec2 size, params::RenderMethod
     measure(state, device, [&] {
         systems::render_system(device, w.resource<Params>(), w.resource<systems::Surface>(),
                                w.resource<systems::Environment>(), w.resource<systems::Ground>(),
-                               w.resource<systems::PuddleRenderer>(), w.resource<systems::RenderTarget>());
+                               w.resource<systems::Clouds>(), w.resource<systems::PuddleRenderer>(),
+                               w.resource<systems::RenderTarget>());
     });
 }
 

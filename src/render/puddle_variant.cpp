@@ -29,7 +29,7 @@ bool ground_hidden(const params::Params& params) {
     return brightest_ground * std::exp(-params.get<ParamId::water_turbidity>() * shortest) < hidden_below;
 }
 
-PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm) {
+PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm, bool cloud_layer) {
     PuddleVariant v;
     v.raymarch = params.get<ParamId::render_method>() == params::RenderMethod::raymarch;
     v.shore = !v.raymarch && params.get<ParamId::puddle_shape>() == params::PuddleShape::shore;
@@ -39,6 +39,7 @@ PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm)
                : params.get<ParamId::ground_image>().empty() ? GroundKind::Paving
                                                              : GroundKind::Image;
     v.env_rgbm = env_rgbm;
+    v.cloud_layer = cloud_layer && !env_rgbm;
     v.tonemap = params.get<ParamId::look_tonemap>();
     return v;
 }
@@ -48,6 +49,7 @@ std::size_t variant_index(const PuddleVariant& v) {
     i = i * 2 + (v.shore ? 1 : 0);
     i = i * ground_kind_count + static_cast<std::size_t>(v.ground);
     i = i * 2 + (v.env_rgbm ? 1 : 0);
+    i = i * 2 + (v.cloud_layer ? 1 : 0);
     return i * tonemap_count + static_cast<std::size_t>(v.tonemap);
 }
 
@@ -60,15 +62,17 @@ std::vector<std::string> variant_defines(const PuddleVariant& v, bool surface_un
     if (v.ground == GroundKind::Image) d.emplace_back("GROUND_IMAGE");
     if (v.ground == GroundKind::Hidden) d.emplace_back("GROUND_HIDDEN");
     if (v.env_rgbm) d.emplace_back("ENV_RGBM");
+    if (v.cloud_layer) d.emplace_back("CLOUD_LAYER");
     d.push_back(fmt::format("TONEMAP {}", static_cast<int>(v.tonemap)));
     return d;
 }
 
 std::string describe(const PuddleVariant& v) {
     static constexpr const char* grounds[] = {"checkerboard", "paving", "ground image", "ground hidden"};
-    return fmt::format("{}{}, {}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect",
+    return fmt::format("{}{}, {}{}{}, {} tone curve", v.raymarch ? "raymarch" : "intersect",
                        v.shore ? ", shore" : "", grounds[static_cast<int>(v.ground)],
-                       v.env_rgbm ? ", RGBM sky" : "", params::choice_name(v.tonemap));
+                       v.env_rgbm ? ", RGBM sky" : "", v.cloud_layer ? ", drifting clouds" : "",
+                       params::choice_name(v.tonemap));
 }
 
 }  // namespace puddle::render

@@ -24,21 +24,23 @@ struct PuddleVariant {
     bool shore = false;  // puddle.shape = shore (with the intersect method only)
     GroundKind ground = GroundKind::Checkerboard;
     bool env_rgbm = false;
+    bool cloud_layer = false;  // the procedural sky's drifting clouds over a cube with room for them
     params::Tonemap tonemap = params::Tonemap::clip;  // its index is TONEMAP_* in colour.glsl
 
     bool operator==(const PuddleVariant&) const = default;
 };
 
 inline constexpr std::size_t tonemap_count = params::choice_count<params::Tonemap>;
-inline constexpr std::size_t puddle_variant_count = 2 * 2 * ground_kind_count * 2 * tonemap_count;
+inline constexpr std::size_t puddle_variant_count = 2 * 2 * ground_kind_count * 2 * 2 * tonemap_count;
 
 // True when turbidity leaves the ground less than 1/4096 of its brightness even along the shortest path
 // through the water (straight down from the highest crest): then the refraction is skipped, and the
 // picture differs from the full computation by under one 8-bit level (a test compares them).
 bool ground_hidden(const params::Params& params);
 
-// The variant for these parameters; env_rgbm: the cube sampled this frame holds RGBM texels.
-PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm);
+// The variant for these parameters; env_rgbm: the cube sampled this frame holds RGBM texels; cloud_layer:
+// it is the procedural sky made with room for the drifting clouds (never with RGBM).
+PuddleVariant choose_puddle_variant(const params::Params& params, bool env_rgbm, bool cloud_layer = false);
 
 // A dense index in [0, puddle_variant_count), for a fixed table of pipelines.
 std::size_t variant_index(const PuddleVariant& v);

@@ -18,6 +18,7 @@
 #include "systems/rain_overlay/rain_overlay_system.hpp"
 #include "systems/sky/camera_environment.hpp"
 #include "systems/sky/camera_system.hpp"
+#include "systems/sky/cloud_layer_system.hpp"
 #include "systems/sky/environment_system.hpp"
 #include "systems/street/street_system.hpp"
 #include "systems/tuning/synced_changes.hpp"
@@ -113,6 +114,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     auto& env = world.insert_resource<Environment>();
     if (auto r = load_environment(device, params, env); !r) return r;
     world.insert_resource<EnvironmentReload>();
+    if (auto r = build_clouds(device, world.insert_resource<Clouds>()); !r) return r;
     auto& ground = world.insert_resource<Ground>();
     if (auto r = load_ground(device, params, ground); !r) return r;
     spdlog::info("ground: {}", ground.source);
@@ -157,6 +159,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
 
     schedule.add(Stage::Render, "surface", surface_system).run_if(wave_field_in_use()).run_if(output_on());
     schedule.add(Stage::Render, "camera environment", camera_environment_system).run_if(output_on());
+    schedule.add(Stage::Render, "cloud drift", cloud_drift_system).run_if(output_on());
     // The looks, each with its entry in Looks: one line a look.
     add_analytic_ripples_plugin(world, schedule);
     add_grid_drops_plugin(world, schedule);

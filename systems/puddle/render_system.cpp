@@ -20,7 +20,7 @@ gpu::PipelineDesc puddle_desc(const render::PuddleVariant& v, bool surface_unorm
             .vertex = "view_window.vert",
             .fragment = "puddle.frag",
             .defines = render::variant_defines(v, surface_unorm),
-            .textures = {"u_surface", "u_env", "u_ground"}};
+            .textures = {"u_surface", "u_env", "u_ground", "u_clouds"}};
 }
 
 }  // namespace
@@ -64,23 +64,25 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
                                    const params::Params& params, PuddleRenderer& renderer) {
     renderer = PuddleRenderer{};
     renderer.surface_unorm = surface.unorm;
-    const render::PuddleVariant v = render::choose_puddle_variant(params, env.rgbm);
+    const render::PuddleVariant v = render::choose_puddle_variant(params, env.rgbm, env.cloud_room);
     return renderer.variants.ensure(device, v, [&] { return puddle_desc(v, surface.unorm); });
 }
 
 void puddle_system(gpu::Device& device, const params::Params& params, const Surface& surface,
-                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
-                   const RenderTarget& target, const CameraEnvironment& camera) {
-    render_system(device, params, surface, env, ground, renderer, target, camera.reflection());
+                   const Environment& env, const Ground& ground, const Clouds& clouds,
+                   PuddleRenderer& renderer, const RenderTarget& target, const CameraEnvironment& camera) {
+    render_system(device, params, surface, env, ground, clouds, renderer, target, camera.reflection());
 }
 
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
-                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
-                   const RenderTarget& target, const gpu::Texture* environment_override,
-                   const render::PuddleVariant* variant) {
+                   const Environment& env, const Ground& ground, const Clouds& clouds,
+                   PuddleRenderer& renderer, const RenderTarget& target,
+                   const gpu::Texture* environment_override, const render::PuddleVariant* variant) {
     const gpu::FrameTarget& frame = target.target;
-    const bool rgbm = env.rgbm && !environment_override;  // the camera cube is sRGB8
-    render::PuddleVariant chosen = variant ? *variant : render::choose_puddle_variant(params, rgbm);
+    const bool rgbm = env.rgbm && !environment_override;               // the camera cube is sRGB8
+    const bool cloud_layer = env.cloud_room && !environment_override;  // the camera's cube has no room
+    render::PuddleVariant chosen =
+        variant ? *variant : render::choose_puddle_variant(params, rgbm, cloud_layer);
     // The setts show until the first image asked for is made (Ground).
     if (!variant && chosen.ground == render::GroundKind::Image && !ground.made)
         chosen.ground = render::GroundKind::Paving;
@@ -100,7 +102,8 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     pass.set_pipeline(pipeline->pipeline)
         .set_texture(0, surface.texture, surface_sampler(params, surface))
         .set_texture(1, environment_override ? *environment_override : env.cube, env.sampler)
-        .set_texture(2, ground.texture, ground.sampler);
+        .set_texture(2, ground.texture, ground.sampler)
+        .set_texture(3, clouds.layer, clouds.sampler);
     render::set_param_uniforms(pass, pipeline->params, params);
     pass.set("u_view_window", target.view.uniform())
         .set("u_cam_forward", cam.forward)
@@ -109,6 +112,15 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
         .set("u_cam_scale", cam.scale)
         .set("u_env_matrix", env_matrix)
         .set("u_env_scale", std::exp2(params.get<ParamId::environment_exposure>()));
+    if (chosen.cloud_layer) {
+        const auto vec3 = [](const std::array<float, 3>& rgb) { return glm::vec3(rgb[0], rgb[1], rgb[2]); };
+        pass.set("u_cloud_offset", clouds.offset)
+            .set("u_cloud_scale", 1.0f / assets::cloud_tile_units)
+            .set("u_cloud_base", vec3(clouds.light.base))
+            .set("u_cloud_top", vec3(clouds.light.top))
+            .set("u_cloud_halo", vec3(clouds.light.moon_halo))
+            .set("u_moon_direction", vec3(clouds.light.moon_direction));
+    }
     const SurfaceMapping map = surface_mapping(params, surface);
     pass.set("u_surface_map", map.uv)
         .set("u_slope_scale", map.slope_scale)

@@ -11,6 +11,7 @@
 #include "render/puddle_variant.hpp"
 #include "systems/common/render_target.hpp"
 #include "systems/sky/camera_environment.hpp"
+#include "systems/sky/cloud_layer_system.hpp"
 #include "systems/sky/environment_system.hpp"
 #include "systems/water/surface_system.hpp"
 #include "util/result.hpp"
@@ -49,13 +50,14 @@ Result<void> build_puddle_renderer(gpu::Device& device, const Surface& surface, 
 
 // Render stage: the puddle, reflecting the camera's cube while it streams, else the sky.
 void puddle_system(gpu::Device& device, const params::Params& params, const Surface& surface,
-                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
-                   const RenderTarget& target, const CameraEnvironment& camera);
+                   const Environment& env, const Ground& ground, const Clouds& clouds,
+                   PuddleRenderer& renderer, const RenderTarget& target, const CameraEnvironment& camera);
 
 // The pass itself. `variant` forces one (tests compare variants); by default the parameters choose.
 void render_system(gpu::Device& device, const params::Params& params, const Surface& surface,
-                   const Environment& env, const Ground& ground, PuddleRenderer& renderer,
-                   const RenderTarget& target, const gpu::Texture* environment_override = nullptr,
+                   const Environment& env, const Ground& ground, const Clouds& clouds,
+                   PuddleRenderer& renderer, const RenderTarget& target,
+                   const gpu::Texture* environment_override = nullptr,
                    const render::PuddleVariant* variant = nullptr);
 
 }  // namespace puddle::systems

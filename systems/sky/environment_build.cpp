@@ -54,13 +54,18 @@ EnvironmentRequest EnvironmentRequest::from(const params::Params& params, const 
 }
 
 Result<PreparedEnvironment> prepare_environment(const EnvironmentRequest& request, std::stop_token stop) {
+    // The procedural sky's clouds drift where the cube can hold where they may show (its alpha): not in
+    // RGBM, whose alpha is the multiplier.
+    const bool drifting_clouds = request.image.empty() && request.half_float_render_targets;
     auto images = assets::load_environment_images(
-        request.image, request.face_size > 0 ? request.face_size : assets::procedural_sky_face_size);
+        request.image, request.face_size > 0 ? request.face_size : assets::procedural_sky_face_size,
+        drifting_clouds ? assets::SkyClouds::drifting : assets::SkyClouds::baked);
     if (!images) return images.error();
     if (stop.stop_requested()) return stopped(request);
     PreparedEnvironment out;
     out.source = images->source;
     out.hdr = images->hdr();
+    out.cloud_room = drifting_clouds;
     // HDR wants half floats; their mipmaps need half-float render targets, so without those it is RGBM
     // in RGBA8.
     out.rgbm = out.hdr && !request.half_float_render_targets;
@@ -136,6 +141,7 @@ void EnvironmentBuild::finish(gpu::Device& device, Environment& e) {
     e.source = prepared_.source;
     e.hdr = prepared_.hdr;
     e.rgbm = prepared_.rgbm;
+    e.cloud_room = prepared_.cloud_room;
     e.sampler = device.create_sampler({.label = "environment", .mipmaps = true, .wrap = gpu::Wrap::Clamp});
     spdlog::info(
         "environment: {} ({}x{} faces, {})", e.source, e.cube.width(), e.cube.height(),

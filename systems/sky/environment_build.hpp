@@ -36,7 +36,8 @@ struct EnvironmentRequest {
 struct PreparedEnvironment {
     std::string source;  // for logs
     bool hdr = false;
-    bool rgbm = false;  // HDR stored as RGBM RGBA8 (no half-float render targets)
+    bool rgbm = false;        // HDR stored as RGBM RGBA8 (no half-float render targets)
+    bool cloud_room = false;  // alpha: how much the drifting cloud layer may cover (procedural sky)
     gpu::TextureFormat format = gpu::TextureFormat::SRGB8_A8;
     int face_size = 0;
     // Six faces (or a cube cross) from files: cube_levels[level][face], only level 0 when the GPU makes

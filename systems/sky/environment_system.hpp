@@ -30,6 +30,9 @@ struct Environment {
     std::string source;  // for logs
     bool rgbm = false;   // texels are RGBM RGBA8: the shader decodes them (colour.glsl)
     bool hdr = false;    // linear radiance beyond 1 is possible
+    // The procedural sky without its clouds: alpha says how much the drifting layer (Clouds) may cover
+    // each texel; the puddle shader draws them (CLOUD_LAYER). Else the cube is the whole sky.
+    bool cloud_room = false;
     render::EquirectPipelines panorama_pipelines;  // converting panoramas: compiled once, kept for reloads
     // The parameter values last asked for, loaded or not: a change triggers a reload, a failure is not
     // retried.

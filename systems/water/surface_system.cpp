@@ -64,6 +64,12 @@ void surface_system(gpu::Device& device, const WaveField& field, Surface& surfac
                                    .target = {&surface.texture, {surface.resolution, surface.resolution}},
                                    .load = gpu::LoadOp::DontCare});
     pass.set_pipeline(built->pipeline).set_texture(0, field.newest(), surface.field_sampler);
+    if (surface.periodic)
+        pass.set("u_rain", field.last_rain.rain)
+            .set("u_slot", field.last_rain.slot)
+            .set("u_slot_time", field.last_rain.slot_time)
+            .set("u_texel_mm", field.last_rain.texel_mm)
+            .set("u_splash_gain", field.last_rain.splash);
     pass.draw_fullscreen();
     if (surface.periodic) surface.texture.generate_mipmaps();
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -116,17 +117,23 @@ void capillary_steps(gpu::Device& device, const params::Params& params, const Fr
         const double back = (s.substeps - 1 - i) * s.dt;  // this pass ends this long before the step
         const double t = clock.sim_time - back;
         const double slot = std::floor(t / rain_slot_s);
+        const WaveField::Rain rain{
+            .rain = glm::vec4(static_cast<float>(cells), static_cast<float>(field.resolution / cells),
+                              static_cast<float>(chance), static_cast<float>(marshall_palmer_slope(rate))),
+            .slot = static_cast<int>(std::fmod(slot, 1048576.0)),
+            .slot_time = static_cast<float>(t - slot * rain_slot_s),
+            .texel_mm = static_cast<float>(s.texel_m * 1e3),
+            .splash = std::min(1.0f, params.get<ParamId::rain_intensity>() / 0.3f)};
+        field.last_rain = rain;
         auto pass = device.begin_pass(step_pass(field));
         bind_step(pass, step, field, drops.count);
         pass.set("u_step", glm::vec4(s.a, s.b, s.v, s.keep))
             .set("u_level", s.level)
             .set("u_drop_shape", glm::vec4(static_cast<float>(s.texel_m * 1e3), static_cast<float>(gain),
                                            static_cast<float>(-back), 0.0f))
-            .set("u_rain",
-                 glm::vec4(static_cast<float>(cells), static_cast<float>(field.resolution / cells),
-                           static_cast<float>(chance), static_cast<float>(marshall_palmer_slope(rate))))
-            .set("u_slot", static_cast<int>(std::fmod(slot, 1048576.0)))
-            .set("u_slot_time", static_cast<float>(t - slot * rain_slot_s));
+            .set("u_rain", rain.rain)
+            .set("u_slot", rain.slot)
+            .set("u_slot_time", rain.slot_time);
         pass.draw_fullscreen();
         field.current = 1 - field.current;
     }

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/vec4.hpp>
 
 #include "gpu/device.hpp"
 #include "params/param_store.hpp"
@@ -52,6 +53,16 @@ struct WaveField {
     gpu::Sampler nearest;
     gpu::Buffer drops;             // std140 vec4[max_drops]
     std::uint64_t generation = 0;  // the FrameClock::field_generation it was last cleared for
+    // The rain's hashing uniforms (rain_impacts.glsl) at the end of the last step, capillary only: the
+    // surface pass draws the splashes of the same drops. rain.z = 0: no rain. splash: how bright a splash
+    // is, 1 at the default rain.intensity (0.3) and above, 0 with no impulse.
+    struct Rain {
+        glm::vec4 rain{0.0f};
+        int slot = 0;
+        float slot_time = 0.0f;
+        float texel_mm = 1.0f;
+        float splash = 0.0f;
+    } last_rain;
     // A field that could not be made: not retried every frame, only once the parameters change again.
     struct Request {
         int resolution = 0;

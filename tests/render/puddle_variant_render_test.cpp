@@ -44,12 +44,13 @@ TwoPictures render_both(std::initializer_list<std::string> sets, GroundKind forc
     ecs::World& w = engine->world();
     const auto& params = w.resource<params::Params>();
     const auto& env = w.resource<systems::Environment>();
-    out.chosen_variant = render::choose_puddle_variant(params, env.rgbm);
+    out.chosen_variant = render::choose_puddle_variant(params, env.rgbm, env.cloud_room);
     PuddleVariant forced = out.chosen_variant;
     forced.ground = forced_ground;
     systems::render_system(engine->device(), params, w.resource<systems::Surface>(), env,
-                           w.resource<systems::Ground>(), w.resource<systems::PuddleRenderer>(),
-                           w.resource<systems::RenderTarget>(), nullptr, &forced);
+                           w.resource<systems::Ground>(), w.resource<systems::Clouds>(),
+                           w.resource<systems::PuddleRenderer>(), w.resource<systems::RenderTarget>(),
+                           nullptr, &forced);
     out.forced = engine->read_frame();
     return out;
 }

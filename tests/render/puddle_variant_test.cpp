@@ -50,6 +50,9 @@ TEST(PuddleVariant, EachParameterPicksItsVariant) {
                   .ground,
               GroundKind::Checkerboard);
     EXPECT_TRUE(choose_puddle_variant(with({}), true).env_rgbm);
+    EXPECT_TRUE(choose_puddle_variant(with({}), false, true).cloud_layer);
+    EXPECT_FALSE(choose_puddle_variant(with({}), true, true).cloud_layer)
+        << "an RGBM cube has no room for them";
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=aces"}), false).tonemap, params::Tonemap::aces);
     EXPECT_EQ(choose_puddle_variant(with({"look.tonemap=clip"}), false).tonemap, params::Tonemap::clip);
 }
@@ -84,27 +87,30 @@ TEST(PuddleVariant, EveryVariantHasItsOwnSlotAndDefines) {
             for (GroundKind g :
                  {GroundKind::Checkerboard, GroundKind::Paving, GroundKind::Image, GroundKind::Hidden})
                 for (bool rgbm : {false, true})
-                    for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
-                        const PuddleVariant v{.raymarch = raymarch,
-                                              .shore = shore,
-                                              .ground = g,
-                                              .env_rgbm = rgbm,
-                                              .tonemap = static_cast<params::Tonemap>(t)};
-                        const std::size_t i = variant_index(v);
-                        EXPECT_LT(i, puddle_variant_count);
-                        slots.insert(i);
-                        const auto d = variant_defines(v, false);
-                        defines.insert(d);
-                        EXPECT_EQ(has(d, "METHOD_RAYMARCH"), raymarch);
-                        EXPECT_EQ(has(d, "SHORE"), shore);
-                        EXPECT_EQ(has(d, "GROUND_PAVING"), g == GroundKind::Paving);
-                        EXPECT_EQ(has(d, "GROUND_IMAGE"), g == GroundKind::Image);
-                        EXPECT_EQ(has(d, "GROUND_HIDDEN"), g == GroundKind::Hidden);
-                        EXPECT_EQ(has(d, "ENV_RGBM"), rgbm);
-                        EXPECT_TRUE(has(d, "TONEMAP " + std::to_string(t)));
-                        EXPECT_FALSE(has(d, "SURFACE_UNORM"));
-                        EXPECT_TRUE(has(variant_defines(v, true), "SURFACE_UNORM"));
-                    }
+                    for (bool clouds : {false, true})
+                        for (int t = 0; t < static_cast<int>(tonemap_count); ++t) {
+                            const PuddleVariant v{.raymarch = raymarch,
+                                                  .shore = shore,
+                                                  .ground = g,
+                                                  .env_rgbm = rgbm,
+                                                  .cloud_layer = clouds,
+                                                  .tonemap = static_cast<params::Tonemap>(t)};
+                            const std::size_t i = variant_index(v);
+                            EXPECT_LT(i, puddle_variant_count);
+                            slots.insert(i);
+                            const auto d = variant_defines(v, false);
+                            defines.insert(d);
+                            EXPECT_EQ(has(d, "METHOD_RAYMARCH"), raymarch);
+                            EXPECT_EQ(has(d, "SHORE"), shore);
+                            EXPECT_EQ(has(d, "GROUND_PAVING"), g == GroundKind::Paving);
+                            EXPECT_EQ(has(d, "GROUND_IMAGE"), g == GroundKind::Image);
+                            EXPECT_EQ(has(d, "GROUND_HIDDEN"), g == GroundKind::Hidden);
+                            EXPECT_EQ(has(d, "ENV_RGBM"), rgbm);
+                            EXPECT_EQ(has(d, "CLOUD_LAYER"), clouds);
+                            EXPECT_TRUE(has(d, "TONEMAP " + std::to_string(t)));
+                            EXPECT_FALSE(has(d, "SURFACE_UNORM"));
+                            EXPECT_TRUE(has(variant_defines(v, true), "SURFACE_UNORM"));
+                        }
     EXPECT_EQ(slots.size(), puddle_variant_count);
     EXPECT_EQ(defines.size(), puddle_variant_count);
 }

@@ -25,14 +25,14 @@ inline const std::vector<std::string> puddle_plugin_schedule = {
     "WaveField)",
     "render/surface if the wave field is in use and output on (reads WaveField; writes Device, Surface)",
     "render/camera environment if output on (reads Params, Environment; writes Device, CameraEnvironment)",
+    "render/cloud drift if output on (reads Params, FrameClock; writes Clouds)",
     "render/analytic ripples if drops are analytic and output on (reads Params, FrameClock; writes Device, "
     "AnalyticRipples, "
     "Surface)",
     "render/grid drops if drops are grid and output on (reads Params, FrameClock; writes Device, GridDrops, "
     "Surface)",
-    "render/puddle if look is puddle and output on (reads Params, Surface, Environment, Ground, "
-    "RenderTarget, "
-    "CameraEnvironment; writes Device, PuddleRenderer)",
+    "render/puddle if look is puddle and output on (reads Params, Surface, Environment, Ground, Clouds, "
+    "RenderTarget, CameraEnvironment; writes Device, PuddleRenderer)",
     "render/ocean if look is ocean and output on (reads Params, FrameClock, RenderTarget; writes Device, "
     "OceanRenderer)",
     "render/street if look is street and output on (reads Params, FrameClock, RenderTarget; writes Device, "

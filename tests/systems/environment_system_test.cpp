@@ -139,8 +139,9 @@ TEST(EnvironmentSystem, ChangedImagesReloadAndBadOnesKeepThePicture) {
     const std::string ground = (dir / "red.png").string();
     ASSERT_TRUE(assets::write_png(ground, red).ok());
 
-    auto engine = make_engine(
-        make_params({"rain.intensity=0", "overlay.rain=false", "ground.checkerboard=false"}), {96, 54});
+    auto engine = make_engine(make_params({"rain.intensity=0", "overlay.rain=false",
+                                           "environment.cloud_drift=0", "ground.checkerboard=false"}),
+                              {96, 54});
     ASSERT_TRUE(engine);
     const assets::Image before = render_frames(*engine, 2);
     auto& params = engine->params();
@@ -178,9 +179,10 @@ TEST(EnvironmentSystem, TheGroundImageIsReadOnlyWhenItShows) {
     const std::string red_path = (dir / "red.png").string();
     ASSERT_TRUE(assets::write_png(red_path, red).ok());
 
-    auto engine = make_engine(make_params({"rain.intensity=0", "overlay.rain=false", "water.turbidity=0.05",
-                                           "ground.checkerboard=true"}),
-                              {96, 54});
+    auto engine =
+        make_engine(make_params({"rain.intensity=0", "overlay.rain=false", "environment.cloud_drift=0",
+                                 "water.turbidity=0.05", "ground.checkerboard=true"}),
+                    {96, 54});
     ASSERT_TRUE(engine);
     const auto& ground = engine->world().resource<systems::Ground>();
     EXPECT_FALSE(ground.made);
@@ -188,8 +190,9 @@ TEST(EnvironmentSystem, TheGroundImageIsReadOnlyWhenItShows) {
     EXPECT_EQ(ground.source, "checkerboard");
     const assets::Image checkerboard = render_frames(*engine, 2);
 
-    auto setts_engine = make_engine(
-        make_params({"rain.intensity=0", "overlay.rain=false", "water.turbidity=0.05"}), {96, 54});
+    auto setts_engine = make_engine(make_params({"rain.intensity=0", "overlay.rain=false",
+                                                 "environment.cloud_drift=0", "water.turbidity=0.05"}),
+                                    {96, 54});
     ASSERT_TRUE(setts_engine);
     EXPECT_FALSE(setts_engine->world().resource<systems::Ground>().made) << "the setts need no texture";
     const assets::Image setts = render_frames(*setts_engine, 2);

@@ -19,6 +19,7 @@ constexpr int N = 64;
 
 struct SurfaceTexel {
     float height, dx, dz;
+    float splash;  // alpha: the splashes of drops that hit in the last 60 ms
 };
 
 std::vector<SurfaceTexel> read_surface(app::Engine& e) {
@@ -27,7 +28,7 @@ std::vector<SurfaceTexel> read_surface(app::Engine& e) {
     auto decode = [&](float v) { return surface.unorm ? (v * 255.0f - 128.0f) / 127.0f * 4.0f : v; };
     std::vector<SurfaceTexel> out(t.size() / 4);
     for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = {decode(t[4 * i]), decode(t[4 * i + 1]), decode(t[4 * i + 2])};
+        out[i] = {decode(t[4 * i]), decode(t[4 * i + 1]), decode(t[4 * i + 2]), t[4 * i + 3]};
     return out;
 }
 
@@ -92,7 +93,58 @@ TEST(SurfaceSystem, StillWaterIsFlatInEveryTexel) {
         ASSERT_EQ(t.height, 0.0f);
         ASSERT_EQ(t.dx, 0.0f);
         ASSERT_EQ(t.dz, 0.0f);
+        ASSERT_EQ(t.splash, 0.0f) << "the reference's field has no rain, so no splashes";
     }
+}
+
+// Which texels show a splash after the next step of the capillary field in `e`.
+std::vector<bool> splashes_after_step(app::Engine& e) {
+    auto& w = e.world();
+    begin_step_system(w.resource<systems::FrameClock>());
+    step(e);
+    systems::surface_system(e.device(), w.resource<systems::WaveField>(), w.resource<systems::Surface>());
+    std::vector<bool> lit;
+    for (const SurfaceTexel& t : read_surface(e)) lit.push_back(t.splash > 0.05f);
+    return lit;
+}
+
+std::size_t count(const std::vector<bool>& v) {
+    return static_cast<std::size_t>(std::count(v.begin(), v.end(), true));
+}
+std::size_t count_both(const std::vector<bool>& a, const std::vector<bool>& b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) n += a[i] && b[i] ? 1 : 0;
+    return n;
+}
+
+TEST(SurfaceSystem, SplashesAreSmallAndBrief) {
+    // Heavy rain (30 mm/h) over a 20 cm field of 3.1 mm texels.
+    auto e = make_engine(make_params({"wave.model=capillary", "wave.resolution=" + std::to_string(N),
+                                      "wave.size=0.2", "rain.rate=30", "rain.drift=0"}),
+                         {32, 18});
+    ASSERT_TRUE(e);
+    for (int i = 0; i < 30; ++i) splashes_after_step(*e);
+    const std::vector<bool> now = splashes_after_step(*e);
+    const std::vector<bool> next_frame = splashes_after_step(*e);
+    for (int i = 0; i < 5; ++i) splashes_after_step(*e);
+    const std::vector<bool> later = splashes_after_step(*e);  // 0.1 s after `now`
+
+    // At most one drop a 4 cm cell and 0.25 s slot: 25 cells, so about 25 * 0.06 / 0.25 = 6 splashes live
+    // at once, each at most 3 drop diameters (12 mm, under 4 texels) across: some 100 texels of 4096.
+    const std::size_t texels = std::size_t(N) * N;
+    EXPECT_GT(count(now), 0u) << "a splash where drops hit in the last 60 ms";
+    EXPECT_LT(count(now), texels / 20) << "splashes are a few millimetres across";
+    // Brief: the next frame still shows most of them; a tenth of a second later they are others.
+    EXPECT_GT(count_both(now, next_frame), count(now) / 3) << "a splash lasts a few frames";
+    EXPECT_LE(count_both(now, later), count(now) / 10) << "a splash is gone within 0.1 s";
+
+    // Drops with no impulse throw up nothing; no rain, no splashes.
+    e->params().set(params::ParamId::rain_intensity, 0.0f, params::ParamSource::CommandLine);
+    EXPECT_EQ(count(splashes_after_step(*e)), 0u);
+    e->params().set(params::ParamId::rain_intensity, 0.3f, params::ParamSource::CommandLine);
+    EXPECT_GT(count(splashes_after_step(*e)) + count(splashes_after_step(*e)), 0u);
+    e->params().set(params::ParamId::rain_rate, 0.0f, params::ParamSource::CommandLine);
+    EXPECT_EQ(count(splashes_after_step(*e)), 0u);
 }
 
 }  // namespace
