@@ -76,7 +76,14 @@ uniform vec4 u_drop_shape;  // texel size in mm, drop gain (height units per pas
 #include "rain_impacts.glsl"
 
 ivec2 n_texels;
-vec2 at(ivec2 p) { return load((p + n_texels) % n_texels); }  // periodic; p is at most 2 texels outside
+// The field `d` texels from this one, wrapped around its edges (periodic) by the sampler's repeat: an
+// integer % per read was most of the step's cost on llvmpipe, which has no vector division.
+vec2 here_uv;
+#ifdef FIXED_POINT_SCALE
+#define AT(dx, dy) (vec2(textureLodOffset(u_field, here_uv, 0.0, ivec2(dx, dy)).rg) / FIXED_POINT_SCALE)
+#else
+#define AT(dx, dy) textureLodOffset(u_field, here_uv, 0.0, ivec2(dx, dy)).rg
+#endif
 
 // The impulse of a drop of diameter d (mm) t seconds after it hit, at r texels from it: a zero-mean ring
 // profile (the 2D Laplacian of a Gaussian, whose radius follows the drop) pushed by a few cycles of a
@@ -112,12 +119,12 @@ float rain(vec2 p) {
 void main() {
     n_texels = textureSize(u_field, 0);
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec2 here = at(p);  // (current, previous)
-    vec2 l = at(p - ivec2(1, 0)), r = at(p + ivec2(1, 0)), d = at(p - ivec2(0, 1)), u = at(p + ivec2(0, 1));
+    here_uv = gl_FragCoord.xy / vec2(n_texels);  // the texel's centre: nearest reads it exactly
+    vec2 here = AT(0, 0);  // (current, previous)
+    vec2 l = AT(-1, 0), r = AT(1, 0), d = AT(0, -1), u = AT(0, 1);
     vec2 lap = l + r + d + u - 4.0 * here;  // of the current (x) and previous (y) heights
-    float diagonals = at(p + ivec2(-1, -1)).r + at(p + ivec2(1, -1)).r + at(p + ivec2(-1, 1)).r +
-                      at(p + ivec2(1, 1)).r;
-    float far = at(p - ivec2(2, 0)).r + at(p + ivec2(2, 0)).r + at(p - ivec2(0, 2)).r + at(p + ivec2(0, 2)).r;
+    float diagonals = AT(-1, -1).r + AT(1, -1).r + AT(-1, 1).r + AT(1, 1).r;
+    float far = AT(-2, 0).r + AT(2, 0).r + AT(0, -2).r + AT(0, 2).r;
     float lap2 = 20.0 * here.r - 8.0 * (l.r + r.r + d.r + u.r) + 2.0 * diagonals + far;
 
     float next = here.r + u_step.w * (here.r - here.g) + u_step.x * lap.x - u_step.y * lap2 +

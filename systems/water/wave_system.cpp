@@ -59,8 +59,11 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
         return built;
     if (field.drops.id() == 0) {
         // The shader reads texels with texelFetch; a nearest sampler keeps unfilterable formats complete.
-        field.nearest = device.create_sampler(
-            {.label = "wave field", .min = gpu::Filter::Nearest, .mag = gpu::Filter::Nearest});
+        // Repeat: the capillary step reads its periodic neighbours through the wrap (wave_step.frag).
+        field.nearest = device.create_sampler({.label = "wave field",
+                                               .min = gpu::Filter::Nearest,
+                                               .mag = gpu::Filter::Nearest,
+                                               .wrap = gpu::Wrap::Repeat});
         auto drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
         if (!drops) return drops.error();
         field.drops = std::move(drops).value();
