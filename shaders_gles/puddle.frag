@@ -44,7 +44,7 @@ uniform vec2 u_cloud_offset;   // CLOUD_LAYER: how far the clouds have drifted, 
 uniform float u_cloud_scale;   // 1 / deck units a tile spans
 uniform vec3 u_cloud_base;     // cloud undersides lit by the city (linear radiance)
 uniform vec3 u_cloud_top;      // clouds overhead
-uniform vec3 u_cloud_halo;     // silver added near the moon
+uniform vec3 u_cloud_halo;     // silver added near the moon, per unit of cos(angle to it) above 0.96
 uniform vec3 u_moon_direction;
 uniform vec4 u_surface_map;    // surface uv = xz * map.xy + map.zw: the puddle once, or a capillary tile repeated
 uniform vec2 u_slope_scale;    // world slope per unit of height difference (hR - hL, hU - hD) in world units:
@@ -66,6 +66,10 @@ uniform vec3 u_look_haze_color;
 uniform vec4 u_shore;          // SHORE: the puddle's centre (x, z) and radii (x, z), world units
 uniform vec3 u_under_filter;   // SHORE: 0.7 * (1 - 0.5 * water.tint), what the water passes of the ground
 uniform float u_reflect_gain;      // SHORE: mix(0.3, 0.8, water.reflectivity) - 0.3, the reflection's Fresnel gain
+uniform vec3 u_splash_light;       // SHORE: what a full splash adds, the night's glow (look.haze_color) brightened
+uniform float u_top;               // the water's level: puddle.size.y / 2
+uniform vec3 u_tint_glow;          // SHORE: the water's own faint light, 0.15 * water.tint
+uniform float u_floor_drop;        // SHORE: how far the floor lies below the level at the deepest, 0.6 (top + depth)
 
 const float IOR = 1.333;
 
@@ -76,7 +80,7 @@ vec4 surface_at(vec2 xz) {
     return vec4(decode_surface(texel.rgb), texel.a);
 }
 
-float top() { return 0.5 * u_puddle_size.y; }
+float top() { return u_top; }
 
 // bias: mip levels coarser than the footprint asks for, a rough surface's blur (0: a mirror).
 vec3 environment(vec3 dir, float bias) {
@@ -87,13 +91,12 @@ vec3 environment(vec3 dir, float bias) {
 #else
     vec3 sky = texel.rgb;
 #ifdef CLOUD_LAYER
-    // Where the ray meets a flat deck one unit up (cloud_layer_uv), the layer drifted; darker on top,
-    // lit from below toward the horizon, silver by the moon.
+    // Where the ray meets a flat deck one unit up (cloud_layer_uv), the layer drifted; lit from below
+    // toward the horizon, darker overhead, silver within about 16 degrees of the moon.
     float up = max(e.y, 0.0);
     vec2 deck = e.xz * (u_cloud_scale / (up + 0.1)) + u_cloud_offset;
     float cover = texture(u_clouds, deck, bias).r * texel.a;
-    vec3 cloud = mix(u_cloud_top, u_cloud_base, exp(-4.0 * up)) +
-                 u_cloud_halo * exp(-distance(e, u_moon_direction) * 8.3);
+    vec3 cloud = mix(u_cloud_base, u_cloud_top, up) + u_cloud_halo * max(dot(e, u_moon_direction) - 0.96, 0.0);
     sky = mix(sky, cloud, cover);
 #endif
     return sky * u_env_scale;
@@ -183,7 +186,7 @@ vec3 ground_colour(vec2 xz) {
     // stone (the joint drawn as the pattern's mean: light dashes along every row).
     vec2 footprint = fwidth(q);
     float row = floor(q.y);
-    q.x += 0.5 * row + 0.13 * hash12(vec2(row, 7.0));
+    q.x += 0.5 * row + 0.13 * fract(row * 0.618034);  // the golden ratio's sequence: no two rows alike
     vec2 stone_id = floor(q);
     vec2 edge = 0.5 - abs(fract(q) - 0.5);  // to the stone's nearest side, per axis: 0 at a joint
     vec2 joint = smoothstep(0.04 - footprint, 0.04 + footprint, edge);
@@ -256,13 +259,13 @@ void main() {
     bool plane = water;
     float shore = shore_distance(p.xz);
     water = plane && shore < 0.0;
-    float wet = 1.0 - smoothstep(0.0, 0.3, shore);  // 1 at the waterline, drier away from it
+    float wet = smoothstep(0.3, 0.0, shore);  // 1 at the waterline, drier away from it
     vec3 n = water ? normalize(vec3(s.g * u_normal_scale, 1.0, s.b * u_normal_scale)) : vec3(0.0, 1.0, 0.0);
     float x = 1.0 - abs(dot(d, n));
     float x2 = x * x;
     float fresnel = f0 + (1.0 - f0) * (x2 * x2 * x);
     // Shallower toward the waterline, where the setts show through.
-    float floor_y = top() - 0.6 * (top() + u_puddle_depth) * (0.02 + 0.98 * smoothstep(0.0, 0.3, -shore));
+    float floor_y = top() - u_floor_drop * max(0.02, smoothstep(0.0, 0.3, -shore));
     vec3 t = refract(d, n, 1.0 / IOR);
     float along = water ? (floor_y - p.y) / min(t.y, -1e-4) : 0.0;  // distance through the water
     vec3 stones = ground_colour(p.xz + along * t.xz);
@@ -270,7 +273,7 @@ void main() {
         sky_share = fresnel * u_reflect_gain + 0.3;
         // Stones under water are darker, as wet ones are; then Beer's law and the water's filter.
         vec3 under = mix(u_water_tint, 0.6 * stones, exp(-along * u_water_turbidity)) * u_under_filter;
-        own = under * (1.0 - sky_share) + 0.15 * u_water_tint * (1.0 - fresnel);
+        own = under * (1.0 - sky_share) + u_tint_glow * (1.0 - fresnel);
     } else if (plane) {
         // Wet setts: darker as water fills their pores, and toward the waterline a film that mirrors the
         // lights, blurred as the stones are rough (the film smooths them near the water).
@@ -279,12 +282,9 @@ void main() {
         own = stones * mix(0.45, 0.22, wet) * (1.0 - sky_share);
     }
     if (plane) look = reflect(d, n);
-    // A splash's droplets mirror the scene all around them: they show the bright band over the city,
-    // blurred, where the water showed the reflection of one direction.
-    float splash = water ? s.a : 0.0;
-    look = normalize(mix(look, vec3(d.x, 0.08, d.z), splash));
-    sky_share = mix(sky_share, 1.0, 0.8 * splash);
-    blur += 3.0 * splash;
+    // A splash's droplets catch the night's glow from every side: they add it, brightened (on the wet
+    // setts too, where the rain falls as well).
+    own += s.a * u_splash_light;
     vec3 colour = own + sky_share * environment(look, blur);
     // The distance dissolves into the night's haze rather than ending at an edge.
     if (plane) colour = mix(u_look_haze_color, colour, exp(-distance(o, p) * u_look_fog_density));

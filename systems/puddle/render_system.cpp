@@ -118,7 +118,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
             .set("u_cloud_scale", 1.0f / assets::cloud_tile_units)
             .set("u_cloud_base", vec3(clouds.light.base))
             .set("u_cloud_top", vec3(clouds.light.top))
-            .set("u_cloud_halo", vec3(clouds.light.moon_halo))
+            .set("u_cloud_halo", vec3(clouds.light.moon_halo) * 25.0f)
             .set("u_moon_direction", vec3(clouds.light.moon_direction));
     }
     const SurfaceMapping map = surface_mapping(params, surface);
@@ -131,7 +131,11 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
     const glm::vec3 size = params.get<ParamId::puddle_size>();
     pass.set("u_shore", glm::vec4(-0.05f * size.x, 0.08f * size.z, 0.34f * size.x, 0.3f * size.z))
         .set("u_under_filter", 0.7f * (1.0f - 0.5f * params.get<ParamId::water_tint>()))
-        .set("u_reflect_gain", 0.5f * params.get<ParamId::water_reflectivity>());
+        .set("u_reflect_gain", 0.5f * params.get<ParamId::water_reflectivity>())
+        .set("u_splash_light", 6.0f * params.get<ParamId::look_haze_color>())
+        .set("u_tint_glow", 0.15f * params.get<ParamId::water_tint>())
+        .set("u_top", 0.5f * size.y)
+        .set("u_floor_drop", 0.6f * (0.5f * size.y + params.get<ParamId::puddle_depth>()));
     pass.draw_fullscreen();
 }
 
