@@ -39,6 +39,7 @@ const std::vector<Look>& looks() {
         {"puddle_analytic_100", {"drops.model=analytic", "analytic.sources=100"}},
         {"puddle_analytic_500", {"drops.model=analytic", "analytic.sources=500"}},
         {"ocean", {"scene.kind=ocean"}},
+        {"ocean_reference", {"scene.kind=ocean", "ocean.method=reference"}},
         {"street", {"scene.kind=street"}},
         {"street_rain", {"scene.kind=street", "overlay.rain=true"}},
         // Where the default's time goes: without its streaks, within the reference's box.

@@ -11,8 +11,13 @@ namespace puddle::systems {
 using params::ParamId;
 
 namespace {
-gpu::PipelineDesc ocean_desc() {
-    return {.label = "ocean", .vertex = "view_window.vert", .fragment = "ocean.frag"};
+gpu::PipelineDesc ocean_desc(params::OceanMethod method) {
+    if (method == params::OceanMethod::reference)
+        return {.label = "ocean (reference march)", .vertex = "view_window.vert", .fragment = "ocean.frag"};
+    return {.label = "ocean",
+            .vertex = "view_window.vert",
+            .fragment = "ocean.frag",
+            .defines = {"OCEAN_SECANT"}};
 }
 }  // namespace
 
@@ -30,11 +35,14 @@ OceanTime ocean_time(double seconds, double speed) {
     return ot;
 }
 
-OceanRenderer::OceanRenderer() : pass(ocean_desc()) {}
+OceanRenderer::OceanRenderer()
+    : pass(ocean_desc(params::OceanMethod::secant)), reference(ocean_desc(params::OceanMethod::reference)) {}
 
 void ocean_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                   OceanRenderer& ocean, const RenderTarget& target) {
-    ocean.pass.draw(device, params, target, gpu::LoadOp::DontCare, [&](gpu::RenderPass& pass) {
+    const bool reference = params.get<ParamId::ocean_method>() == params::OceanMethod::reference;
+    FullscreenPass& chosen = reference && ocean.reference.request(device) ? ocean.reference : ocean.pass;
+    chosen.draw(device, params, target, gpu::LoadOp::DontCare, [&](gpu::RenderPass& pass) {
         const render::ViewBasis cam = render::view_basis(
             params.get<ParamId::ocean_camera_position>(), params.get<ParamId::ocean_camera_target>(),
             params.get<ParamId::camera_fov>(), target.view.view_aspect(target.target.size));

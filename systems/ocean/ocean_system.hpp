@@ -33,9 +33,11 @@ struct OceanTime {
 };
 OceanTime ocean_time(double seconds, double speed);
 
-// Resource.
+// Resource: a pass per ocean.method. `pass` (secant, the default) is the one the look prepares; the
+// reference's is built when first asked for, and until it is ready the secant one is drawn.
 struct OceanRenderer {
     FullscreenPass pass;
+    FullscreenPass reference;
     OceanRenderer();
 };
 

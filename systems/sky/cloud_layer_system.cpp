@@ -10,16 +10,21 @@ namespace puddle::systems {
 using params::ParamId;
 
 Result<void> build_clouds(gpu::Device& device, Clouds& clouds) {
-    const assets::Image image = assets::cloud_layer_image();
+    assets::Image level = assets::cloud_layer_image();
+    const int levels = gpu::full_mip_count(level.width);
     auto texture = device.create_texture({.label = "cloud layer",
                                           .format = gpu::TextureFormat::RGBA8,
-                                          .width = image.width,
-                                          .height = image.height,
-                                          .mip_levels = gpu::full_mip_count(image.width)});
+                                          .width = level.width,
+                                          .height = level.height,
+                                          .mip_levels = levels});
     if (!texture) return texture.error();
     clouds.layer = std::move(texture).value();
-    clouds.layer.upload(std::as_bytes(std::span(image.data)));
-    clouds.layer.generate_mipmaps();
+    // The mip chain made here, by 2x2 averages (it tiles, and coverage averages as it should), so start-up
+    // renders nothing for it (llvmpipe's mipmap pass over it crashed under QEMU's AVX2: tests/vm/run).
+    for (int i = 0; i < levels; ++i) {
+        if (i > 0) level = assets::halve(level);
+        clouds.layer.upload(std::as_bytes(std::span(level.data)), i);
+    }
     clouds.sampler =
         device.create_sampler({.label = "cloud layer", .mipmaps = true, .wrap = gpu::Wrap::Repeat});
     clouds.light = assets::night_sky_cloud_light();

@@ -393,6 +393,19 @@ TEST_F(RemoteEndToEnd, SigtermWhileTheBrokersHostDropsPacketsEndsAtOnce) {
     EXPECT_LT(monotonic_seconds() - t0, 1.5) << p.log();
 }
 
+// The same with the broker's name lookup hanging (a DNS server that drops packets): libmosquitto looks the
+// name up inside its connect, which no stop interrupts; the stop leaves it behind, says so, and exits.
+TEST_F(RemoteEndToEnd, SigtermWhileTheBrokersNameLookupHangsEndsAtOnce) {
+    dir.write("puddle.toml", remote_config(1883, "host = \"broker.hang.test\"\n"));
+    Running p(puddle_args(dir), dir / "puddle.log", {"LD_PRELOAD=" PUDDLE_HANGING_NAME_LOOKUP});
+    ASSERT_TRUE(p.wait_for("started:")) << p.log();
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // inside the lookup
+    const double t0 = monotonic_seconds();
+    EXPECT_EQ(p.stop(), 0) << p.log();
+    EXPECT_LT(monotonic_seconds() - t0, 2.0) << p.log();
+    EXPECT_EQ(p.count("broker.hang.test:1883: the network did not answer within 0.9 s"), 1) << p.log();
+}
+
 TEST_F(RemoteEndToEnd, LastWillSaysOfflineWhenKilled) {
     start_puddle();
     puddle->signal(SIGKILL);
