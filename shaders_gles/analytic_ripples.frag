@@ -42,5 +42,5 @@ void main() {
         gradient += dw * delta / max(d, 1e-4);
     }
     // Central differences one texel apart, as surface.frag stores them: hL - hR = -2 dh/dx.
-    o_surface = vec4(encode_surface(vec3(h, -2.0 * gradient)), 1.0);
+    o_surface = vec4(encode_surface(vec3(h, -2.0 * gradient)), 0.0);  // alpha: no splashes (surface.frag)
 }

@@ -53,5 +53,5 @@ void main() {
     float hR = height(p + vec2(texel, 0.0));
     float hD = height(p - vec2(0.0, texel));
     float hU = height(p + vec2(0.0, texel));
-    o_surface = vec4(encode_surface(vec3(height(p), hL - hR, hD - hU)), 1.0);
+    o_surface = vec4(encode_surface(vec3(height(p), hL - hR, hD - hU)), 0.0);  // alpha: no splashes
 }

@@ -6,8 +6,8 @@
 //                highest crest and the sea's floor (no wave is lower than 0), stepped coarsely to the
 //                first point under the water, then refined by secant steps on a height of
 //                GEOMETRY_OCTAVES octaves (after the height-map tracing of Alexander Alekseev's
-//                "Seascape", Shadertoy 2014); the normal takes every octave. A fixed, small amount of work
-//                a pixel, and none for a ray above the highest wave.
+//                "Seascape", Shadertoy 2014); the normal takes every octave. At most twelve height reads a
+//                pixel, and none for a ray above the highest wave.
 //   otherwise ("reference"): the reference's march of up to 200 steps on the full height.
 precision highp float;
 precision highp int;
@@ -109,14 +109,16 @@ float gap_at(vec3 origin, vec3 dir, float t, int octaves) {
 }
 
 // The distance along the ray to the sea, or -1 for a ray that meets none within FAR: COARSE_STEPS steps,
-// closer together near the eye, find the first one under the water (so a ray that grazes a crest meets
-// that crest, not one behind it), then secant steps refine it between that step and the one before.
+// closer together near the eye, find the first one under the water (so a grazing ray mostly meets the
+// nearer crest; a crest thinner than a step can still be passed), then secant steps refine it between
+// that step and the one before. An eye under a crest's height meets the water where it starts.
 float march(vec3 origin, vec3 dir) {
     if (dir.y >= -1e-4) return -1.0;
     float t_near = max((origin.y - highest_wave()) / -dir.y, 0.0), t_far = min(origin.y / -dir.y, FAR);
     if (t_near >= t_far) return -1.0;
     int octaves = min(GEOMETRY_OCTAVES, u_ocean_octaves);
     float t0 = t_near, g0 = gap_at(origin, dir, t_near, octaves);
+    if (g0 < 0.0) return t_near;  // the eye is below the highest crest, and under this one
     float t1 = -1.0, g1 = 0.0;
     for (int i = 1; i <= COARSE_STEPS; ++i) {
         float f = float(i) / float(COARSE_STEPS);

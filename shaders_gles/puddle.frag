@@ -40,7 +40,7 @@ uniform vec3 u_cam_up;
 uniform vec2 u_cam_scale;      // tan(fov / 2) * (aspect, 1), of the whole view (v_uv spans it)
 uniform mat3 u_env_matrix;     // rotation about +Y by environment.rotation
 uniform float u_env_scale;     // 2^environment.exposure
-uniform vec2 u_cloud_offset;   // CLOUD_LAYER: how far the clouds have drifted, in tiles
+uniform vec2 u_cloud_offset;   // CLOUD_LAYER: how far the clouds have drifted (toward +x, +z), in tiles
 uniform float u_cloud_scale;   // 1 / deck units a tile spans
 uniform vec3 u_cloud_base;     // cloud undersides lit by the city (linear radiance)
 uniform vec3 u_cloud_top;      // clouds overhead
@@ -94,7 +94,7 @@ vec3 environment(vec3 dir, float bias) {
     // Where the ray meets a flat deck one unit up (cloud_layer_uv), the layer drifted; lit from below
     // toward the horizon, darker overhead, silver within about 16 degrees of the moon.
     float up = max(e.y, 0.0);
-    vec2 deck = e.xz * (u_cloud_scale / (up + 0.1)) + u_cloud_offset;
+    vec2 deck = e.xz * (u_cloud_scale / (up + 0.1)) - u_cloud_offset;  // the clouds move by +offset
     float cover = texture(u_clouds, deck, bias).r * texel.a;
     vec3 cloud = mix(u_cloud_base, u_cloud_top, up) + u_cloud_halo * max(dot(e, u_moon_direction) - 0.96, 0.0);
     sky = mix(sky, cloud, cover);
@@ -259,7 +259,7 @@ void main() {
     bool plane = water;
     float shore = shore_distance(p.xz);
     water = plane && shore < 0.0;
-    float wet = smoothstep(0.3, 0.0, shore);  // 1 at the waterline, drier away from it
+    float dry = smoothstep(0.0, 0.3, shore);  // 0 at the waterline, 1 a little away from it
     vec3 n = water ? normalize(vec3(s.g * u_normal_scale, 1.0, s.b * u_normal_scale)) : vec3(0.0, 1.0, 0.0);
     float x = 1.0 - abs(dot(d, n));
     float x2 = x * x;
@@ -277,9 +277,9 @@ void main() {
     } else if (plane) {
         // Wet setts: darker as water fills their pores, and toward the waterline a film that mirrors the
         // lights, blurred as the stones are rough (the film smooths them near the water).
-        sky_share = mix(0.15, 0.75, wet) * fresnel;
-        blur = mix(5.0, 2.0, wet);
-        own = stones * mix(0.45, 0.22, wet) * (1.0 - sky_share);
+        sky_share = mix(0.75, 0.15, dry) * fresnel;
+        blur = mix(2.0, 5.0, dry);
+        own = stones * mix(0.22, 0.45, dry) * (1.0 - sky_share);
     }
     if (plane) look = reflect(d, n);
     // A splash's droplets catch the night's glow from every side: they add it, brightened (on the wet

@@ -30,7 +30,7 @@ float splash(vec2 p) {
             float life = age / SPLASH_SECONDS;
             float reach = 0.5 * diameter * (1.0 + 2.0 * life) / u_texel_mm;  // texels
             float r = distance(p, spot);
-            sum += (1.0 - life) * (1.0 - life) * smoothstep(reach + 0.7, 0.5 * reach, r);
+            sum += (1.0 - life) * (1.0 - life) * (1.0 - smoothstep(0.5 * reach, reach + 0.7, r));
         }
     }
     return min(sum, 1.0) * u_splash_gain;

@@ -23,8 +23,8 @@ inline constexpr int cloud_layer_size = 256;  // texels per side of the tile
 // into broken cloud. The same seed gives the same layer on every machine.
 Image cloud_layer_image(std::uint64_t seed = 7);
 
-// Where direction (x, y, z) (y up, any length, y >= 0) meets the deck, in tiles: texture coordinates of
-// the layer before the drift is added. The shader computes the same (u_cloud_scale).
+// Where the unit direction (x, y, z) (y up; below the horizon counts as y = 0) meets the deck, in tiles:
+// texture coordinates of the layer before the drift is added. The shader computes the same (u_cloud_scale).
 inline std::array<float, 2> cloud_layer_uv(float x, float y, float z) {
     const float k = 1.0f / ((y > 0.0f ? y : 0.0f) + 0.1f) / cloud_tile_units;
     return {x * k, z * k};
@@ -33,12 +33,14 @@ inline std::array<float, 2> cloud_layer_uv(float x, float y, float z) {
 // Coverage 0..1 at layer coordinates (u, v) in tiles, bilinear and wrapping, as the GPU's sampler reads it.
 float cloud_coverage(const Image& layer, float u, float v);
 
-// The light of the clouds, as the procedural sky has it (linear radiance): their undersides lit by the
-// city, their tops by the night sky, silver edges near the moon.
+// The light of the drifting clouds, from the procedural sky's palette (linear radiance): the shader runs
+// linearly with the ray's height from `base` at the horizon to `top` overhead (no azimuthal city glow, which
+// the baked clouds have) and adds `moon_halo` times (cos(angle to the moon) - 0.96) * 25, so the full halo
+// at the moon fading to none about 16 degrees away.
 struct CloudLight {
     std::array<float, 3> base{};            // near the horizon, lit from below by the city
     std::array<float, 3> top{};             // overhead
-    std::array<float, 3> moon_halo{};       // added near the moon, fading over about 7 degrees
+    std::array<float, 3> moon_halo{};       // added at the moon, fading to none about 16 degrees away
     std::array<float, 3> moon_direction{};  // unit vector, y up
 };
 

@@ -79,8 +79,10 @@ Vec3 far_windows(const CityView& v, const Building& b, float x_deg, float el_deg
 }
 
 // The far skyline: two layers of blocks up to 8 degrees high on the horizon, behind the near buildings.
-Vec3 far_skyline(const CityView& v, Vec3 c, float az_deg, float el_deg, float glow) {
+// sky_left: the share of `c` (the sky) left showing between the blocks.
+Vec3 far_skyline(const CityView& v, Vec3 c, float az_deg, float el_deg, float glow, float& sky_left) {
     const float pix_deg = v.pix_rad / kDeg;
+    sky_left = 1.0f;
     // Far layer: narrow, lower, hazy blocks with few windows; it fills the gaps of the middle layer.
     {
         constexpr float slot = 360.0f / 240.0f;
@@ -101,6 +103,7 @@ Vec3 far_skyline(const CityView& v, Vec3 c, float az_deg, float el_deg, float gl
                                      .lit_max = 0.2f,
                                      .gain = 1.2f});
             c = mix(c, col, m);
+            sky_left *= 1.0f - m;
         }
     }
     // Middle layer: wider, darker blocks, towers up to 8 degrees, many lit windows.
@@ -123,6 +126,7 @@ Vec3 far_skyline(const CityView& v, Vec3 c, float az_deg, float el_deg, float gl
                                      .lit_max = 0.5f,
                                      .gain = 2.0f});
             c = mix(c, col, m);
+            sky_left *= 1.0f - m;
             // Red aviation light on top of towers.
             if (b.height > 5.5f) {
                 const float dx = x - 0.5f * (b.left + b.right), dy = el_deg - (b.height + 0.15f);
@@ -455,8 +459,12 @@ Vec3 city(const CityView& v, Vec3 d, float az_deg, Vec3 sky, float glow, float& 
         behind = sky;
         open_sky = 1.0f - m;
         const float el_deg = el / kDeg;
-        if (el_deg < 9.0f)
-            behind = far_skyline(v, behind, az_deg, el_deg, glow) + far_street_lights(v, az_deg, el_deg);
+        if (el_deg < 9.0f) {
+            float sky_left = 1.0f;
+            behind =
+                far_skyline(v, behind, az_deg, el_deg, glow, sky_left) + far_street_lights(v, az_deg, el_deg);
+            open_sky *= sky_left;
+        }
     } else {
         behind = street(v, d, glow);
     }

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "bench/bench_engine.hpp"
 #include "bench/camera_benchmarks.hpp"
@@ -96,6 +98,21 @@ bench::ShaderCost shader_cost(params::RenderMethod method) {
     return bench::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
 }
 
+// The other looks' shaders, as their systems build them (systems/ocean, street, rain_overlay). Loops
+// count at most 64 trips: the ocean's reference march (up to 200 steps) is counted as 64.
+struct OtherShader {
+    const char* name;
+    const char* file;
+    std::vector<std::string> defines;
+};
+const std::vector<OtherShader>& other_shaders() {
+    static const std::vector<OtherShader> all{{"ocean secant", "ocean.frag", {"OCEAN_SECANT"}},
+                                              {"ocean reference", "ocean.frag", {}},
+                                              {"street", "street.frag", {}},
+                                              {"rain streaks", "rain_streaks.frag", {}}};
+    return all;
+}
+
 }  // namespace
 
 Figures figures(const Collector& c) {
@@ -118,6 +135,13 @@ Figures figures(const Collector& c) {
         f[fmt::format("shader/{} texture fetches", params::choice_name(m))] = cost.texture_fetches;
         f[fmt::format("shader/{} alu ops", params::choice_name(m))] = cost.alu_ops;
     }
+    for (const OtherShader& o : other_shaders()) {
+        auto shader = gpu::assemble_shader(o.file, o.defines);
+        if (!shader) continue;
+        const bench::ShaderCost cost = bench::estimate_shader_cost(shader->source);
+        f[fmt::format("shader/{} texture fetches", o.name)] = cost.texture_fetches;
+        f[fmt::format("shader/{} alu ops", o.name)] = cost.alu_ops;
+    }
     return f;
 }
 
@@ -130,6 +154,12 @@ bool print_against_baseline(const Figures& now, const Figures& baseline, const s
                     std::string(params::choice_name(m)).c_str(),
                     now.at(fmt::format("shader/{} texture fetches", params::choice_name(m))),
                     now.at(fmt::format("shader/{} alu ops", params::choice_name(m))));
+    std::printf("The other looks' shaders (loops counted at most 64 trips)\n");
+    for (const OtherShader& o : other_shaders())
+        if (now.contains(fmt::format("shader/{} alu ops", o.name)))
+            std::printf("  %-16s %3.0f texture fetches, %5.0f ALU ops\n", o.name,
+                        now.at(fmt::format("shader/{} texture fetches", o.name)),
+                        now.at(fmt::format("shader/{} alu ops", o.name)));
     return check_baseline(now, baseline, path);
 }
 

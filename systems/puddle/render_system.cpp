@@ -118,6 +118,7 @@ void render_system(gpu::Device& device, const params::Params& params, const Surf
             .set("u_cloud_scale", 1.0f / assets::cloud_tile_units)
             .set("u_cloud_base", vec3(clouds.light.base))
             .set("u_cloud_top", vec3(clouds.light.top))
+            // 25 = 1 / (1 - 0.96): the full halo at the moon (puddle.frag's cos threshold, CloudLight).
             .set("u_cloud_halo", vec3(clouds.light.moon_halo) * 25.0f)
             .set("u_moon_direction", vec3(clouds.light.moon_direction));
     }

@@ -32,7 +32,7 @@ Result<void> build_clouds(gpu::Device& device, Clouds& clouds) {
 }
 
 void cloud_drift_system(const params::Params& params, const FrameClock& clock, Clouds& clouds) {
-    // Deck heights a second, in tiles; the direction is fixed (a wind from the north-west).
+    // Deck heights a second, in tiles; the direction is fixed, toward +x and +z.
     const double tiles_per_second = static_cast<double>(params.get<ParamId::environment_cloud_drift>()) /
                                     60.0 / static_cast<double>(assets::cloud_tile_units);
     const double travelled = clock.sim_time * tiles_per_second;

@@ -17,7 +17,7 @@ struct Clouds {
     gpu::Texture layer;  // assets::cloud_layer_image: coverage in R, tiling, mipmapped
     gpu::Sampler sampler;
     assets::CloudLight light;
-    // Layer coordinates (in tiles, each in [0, 1)) the drift has moved the clouds by.
+    // Layer coordinates (in tiles, each in [0, 1)) the drift has moved the clouds by, toward +x and +z.
     glm::vec2 offset{0.0f};
 };
 
@@ -26,7 +26,7 @@ struct Clouds {
 Result<void> build_clouds(gpu::Device& device, Clouds& clouds);
 
 // Render stage, before the looks: the clouds have drifted environment.cloud_drift deck heights a minute
-// toward the south-east since the simulation began, computed from the clock's time (not summed frame by
+// toward +x and +z (0.8, 0.6) since the simulation began, computed from the clock's time (not summed frame by
 // frame) so that every screen of a wall shows the same sky and months lose no precision. A new
 // environment.cloud_drift moves them to where that speed would have taken them.
 void cloud_drift_system(const params::Params& params, const FrameClock& clock, Clouds& clouds);

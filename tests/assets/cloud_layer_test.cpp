@@ -60,10 +60,13 @@ TEST(CloudLayer, TheSkyMadeForItDiffersFromTheBakedOneOnlyWhereCloudsMayShow) {
                     ASSERT_EQ(d[3], 0.0f) << "no cloud below the horizon (-Y face)";
                 }
                 if (d[3] > 0.5f) ++room_texels;
-                if (d[3] == 0.0f) {  // a building, the street or the horizon: no cloud in either
+                if (d[3] ==
+                    0.0f) {  // a building, the street or the horizon: no cloud in either (to float rounding:
+                    // a far block drawn over the sky mixes by a coverage of 1)
                     ++checked;
                     for (int c = 0; c < 3; ++c)
-                        ASSERT_EQ(b[c], d[c]) << "face " << face << " texel " << x << "," << y;
+                        ASSERT_NEAR(b[c], d[c], 1e-5f * std::max(1.0f, b[c]))
+                            << "face " << face << " texel " << x << "," << y;
                 }
             }
         }

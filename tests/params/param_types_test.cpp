@@ -44,7 +44,8 @@ TEST(ParamTypes, EveryEnumHasTheRegistrysChoicesInOrderAndItsDefault) {
     EXPECT_EQ(std::get<std::string>(decl(ParamId::id).default_value), choice_name(Type::def)) << name; \
     EXPECT_EQ(Params().get<ParamId::id>(), Type::def) << name;
 #include "params/params.def"
-    EXPECT_EQ(enums, 12);  // with wave.model and puddle.shape; wall.mode and wall.clock the last two
+    EXPECT_EQ(enums,
+              13);  // with wave.model, puddle.shape and ocean.method; wall.mode and wall.clock the last two
 }
 
 TEST(ParamTypes, ASpellingThatIsNotAnIdentifierKeepsItsSpelling) {
