@@ -55,7 +55,8 @@ void print_summary(const Collector& c) {
     const std::string wave = fmt::format("wave_step/{}", Params{}.get<ParamId::wave_resolution>());
     for (const std::string& key :
          {std::string("floor"), wave, std::string("surface"), std::string("render/intersect"),
-          std::string("render/raymarch"), std::string("frame/intersect"), std::string("frame/raymarch")}) {
+          std::string("render/raymarch"), std::string("rain_overlay"), std::string("frame/intersect"),
+          std::string("frame/raymarch")}) {
         std::printf("\n%-20s", (key == wave ? key + " field" : key).c_str());
         for (glm::ivec2 s : sizes)  // the wave step is measured once, and set against each size's floor
             std::printf(

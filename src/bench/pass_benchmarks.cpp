@@ -1,5 +1,5 @@
 // The passes of a frame at each size: the floor (sample one frame-sized texture, write the frame), the
-// wave step, the surface, the puddle render by method, and the whole frame.
+// wave step, the surface, the puddle render by method, the rain streaks over it, and the whole frame.
 #include "bench/pass_benchmarks.hpp"
 
 #include <fmt/format.h>
@@ -8,6 +8,7 @@
 
 #include "bench/bench_engine.hpp"
 #include "systems/puddle/render_system.hpp"
+#include "systems/rain_overlay/rain_overlay_system.hpp"
 #include "systems/water/surface_system.hpp"
 #include "systems/water/wave_system.hpp"
 
@@ -68,6 +69,18 @@ void bench_render(benchmark::State& state, glm::ivec2 size, params::RenderMethod
     });
 }
 
+// The rain streaks (overlay.rain, on in the default look) blended over the frame's scene.
+void bench_rain_overlay(benchmark::State& state, glm::ivec2 size) {
+    Bench* b = bench_for(size, state);
+    if (!b) return;
+    ecs::World& w = b->engine->world();
+    gpu::Device& device = b->engine->device();
+    measure(state, device, [&] {
+        systems::rain_overlay_system(device, w.resource<Params>(), w.resource<systems::FrameClock>(),
+                                     w.resource<systems::RainOverlay>(), w.resource<systems::RenderTarget>());
+    });
+}
+
 // A whole frame at 60 Hz: exactly one wave step (at the default 60 steps/s), surface, render, present.
 void bench_frame(benchmark::State& state, glm::ivec2 size, params::RenderMethod method,
                  Start start = Start::steady) {
@@ -94,6 +107,7 @@ void register_pass_benchmarks() {
         for (params::RenderMethod m : methods)
             add_benchmark(fmt::format("render/{}/{}", params::choice_name(m), n),
                           [s, m](benchmark::State& st) { bench_render(st, s, m); });
+        add_benchmark("rain_overlay/" + n, [s](benchmark::State& st) { bench_rain_overlay(st, s); });
         for (params::RenderMethod m : methods)
             add_benchmark(fmt::format("frame/{}/{}", params::choice_name(m), n),
                           [s, m](benchmark::State& st) { bench_frame(st, s, m); });

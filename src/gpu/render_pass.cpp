@@ -132,6 +132,10 @@ void RenderPass::draw_fullscreen() {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void RenderPass::draw_quads(int count) {
+    if (count > 0) glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
+}
+
 void RenderPass::end() {
     if (ended_) return;
     ended_ = true;

@@ -72,6 +72,9 @@ public:
     RenderPass& set(UniformLocation at, glm::vec3 v);
     // One triangle covering the target; the vertex shader makes it from gl_VertexID.
     void draw_fullscreen();
+    // `count` quads, each a 4-vertex triangle strip, one instance per quad: the vertex shader places them
+    // from gl_InstanceID and gl_VertexID (0..3, corners (0,0), (1,0), (0,1), (1,1)); no vertex buffer.
+    void draw_quads(int count);
     void end();
 
 private:

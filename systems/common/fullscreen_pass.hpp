@@ -1,7 +1,8 @@
 #pragma once
-// A pass drawn as one fullscreen triangle over view_window.vert (the ocean, the street, the rain
-// overlay): its pipeline, built at start-up or off the frame thread on first use, and the set-up every
-// such pass shares (its pipeline, the parameter uniforms, u_view_window).
+// A pass drawn as one fullscreen triangle over view_window.vert (the ocean, the street), or by its own
+// draw call over the same view window (the rain overlay's quads): its pipeline, built at start-up or off
+// the frame thread on first use, and the set-up every such pass shares (its pipeline, the parameter
+// uniforms, u_view_window).
 
 #include <utility>
 
@@ -36,6 +37,13 @@ struct FullscreenPass {
     template <class SetUniforms>
     void draw(gpu::Device& device, const params::Params& params, const RenderTarget& target, gpu::LoadOp load,
               SetUniforms&& set_uniforms) {
+        draw_with(device, params, target, load, set_uniforms,
+                  [](gpu::RenderPass& pass) { pass.draw_fullscreen(); });
+    }
+    // The same with the pass's own draw call (the rain streaks: a quad per streak) instead of the triangle.
+    template <class SetUniforms, class Draw>
+    void draw_with(gpu::Device& device, const params::Params& params, const RenderTarget& target,
+                   gpu::LoadOp load, SetUniforms&& set_uniforms, Draw&& draw_call) {
         const render::BuiltPipeline* built = cache.request(device, {}, [this] { return desc; });
         if (!built) return;
         auto pass = device.begin_pass({.label = desc.label, .target = target.target, .load = load});
@@ -43,7 +51,7 @@ struct FullscreenPass {
         render::set_param_uniforms(pass, built->params, params);
         pass.set("u_view_window", target.view.uniform());
         set_uniforms(pass);
-        pass.draw_fullscreen();
+        draw_call(pass);
     }
 };
 

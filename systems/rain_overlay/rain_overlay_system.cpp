@@ -12,7 +12,7 @@ using params::ParamId;
 namespace {
 gpu::PipelineDesc rain_desc() {
     return {.label = "rain streaks",
-            .vertex = "view_window.vert",
+            .vertex = "rain_streaks.vert",
             .fragment = "rain_streaks.frag",
             .blend = gpu::Blend::Lit};
 }
@@ -38,12 +38,16 @@ RainOverlay::RainOverlay() : pass(rain_desc()) {}
 
 void rain_overlay_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                          RainOverlay& rain, const RenderTarget& target) {
-    rain.pass.draw(device, params, target, gpu::LoadOp::Load, [&](gpu::RenderPass& pass) {
-        pass.set("u_layer_fall", rain_layer_falls(clock.sim_time, params.get<ParamId::overlay_rain_speed>()))
-            .set("u_resolution", target.view.view_size(target.target.size))
-            .set("u_seed", params.get<ParamId::rain_seed>())
-            .set("u_streak_strength", static_cast<float>(streak_density_factor(params, clock.sim_time)));
-    });
+    rain.pass.draw_with(
+        device, params, target, gpu::LoadOp::Load,
+        [&](gpu::RenderPass& pass) {
+            pass.set("u_layer_fall",
+                     rain_layer_falls(clock.sim_time, params.get<ParamId::overlay_rain_speed>()))
+                .set("u_resolution", target.view.view_size(target.target.size))
+                .set("u_seed", params.get<ParamId::rain_seed>())
+                .set("u_streak_strength", static_cast<float>(streak_density_factor(params, clock.sim_time)));
+        },
+        [](gpu::RenderPass& pass) { pass.draw_quads(rain_streak_quads()); });
 }
 
 Result<void> add_rain_overlay_plugin(ecs::World& world, ecs::Schedule& schedule) {

@@ -1,6 +1,7 @@
 #pragma once
 // Rain streaks (REFERENCE.md section 3's four parallax layers) blended over whatever scene was drawn,
-// when overlay.rain = true. Runs after the scene passes, before present.
+// when overlay.rain = true. Runs after the scene passes, before present. Each streak is a quad of its own
+// (rain_streaks.vert), so the pass shades the pixels the rain covers, not the whole view.
 //
 // A layer's streaks fall at its own speed times overlay.rain_speed, in cells per second, and the fall
 // repeats every cell: the shader gets each layer's fall modulo 1, computed here in double
@@ -20,8 +21,19 @@
 
 namespace puddle::systems {
 
-// Fall speeds of rain_streaks.frag's four layers, far to near, in cells per second.
+// Fall speeds of the four streak layers (shaders_gles/rain_streak_cells.glsl), far to near, in cells per
+// second.
 inline constexpr std::array<double, 4> rain_layer_speeds{1.8, 2.5, 3.2, 3.8};
+// Their scales (LAYERS[i].x there): a layer has 1.5 scale cells across the view and 0.15 scale up it.
+inline constexpr std::array<int, 4> rain_layer_scales{80, 50, 30, 18};
+
+// The quads rain_streaks.vert draws: two per cell of every layer (a streak and the part of it that
+// wrapped round the cell), most of them empty.
+constexpr int rain_streak_quads() {
+    int quads = 0;
+    for (const int scale : rain_layer_scales) quads += 2 * ((3 * scale + 1) / 2) * ((3 * scale + 19) / 20);
+    return quads;
+}
 
 // Each layer's fall at `seconds` for overlay.rain_speed `speed`: cells modulo 1.
 glm::vec4 rain_layer_falls(double seconds, double speed);
