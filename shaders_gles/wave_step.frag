@@ -14,14 +14,12 @@
 //   next = h + keep (h - prev) + a lap(h) - b lap2(h) + v lap(h - prev) + sources.
 // The field is periodic (it repeats across the puddle). Rain falls here, hashed per cell and time slot,
 // so any number of drops costs the same: each cell of the rain grid gets at most one drop per slot, with
-// probability u_rain.z, at a hashed place and time, of a Marshall-Palmer size; u_drops adds explicit ones.
+// a hashed chance, place and time, of a Marshall-Palmer size, read from the rain cells' table made for
+// this pass (rain_cells.frag); u_drops adds explicit ones.
 // FIXED_POINT_SCALE selects the RG32I fallback field.
 precision highp float;
 precision highp int;
 
-#ifdef CAPILLARY
-#include "hash.glsl"
-#endif
 
 #ifdef FIXED_POINT_SCALE
 uniform highp isampler2D u_field;
@@ -70,10 +68,10 @@ void main() {
 #else
 uniform vec4 u_step;        // a, b, v, keep (systems/water/capillary_step.hpp)
 uniform float u_level;      // w0^2 dt^2: the pull back to the water's level
-uniform vec4 u_drop_shape;  // texel size in mm, drop gain (height units per pass at the peak), seconds this
-                            // pass ends before the step (<= 0, added to u_drops' ages), 0
+uniform bool u_impacts_on;     // the rain cells' table holds this pass's drops
 
-#include "rain_impacts.glsl"
+#include "drop_impulse.glsl"
+#include "rain_cells.glsl"
 
 ivec2 n_texels;
 // The field `d` texels from this one, wrapped around its edges (periodic) by the sampler's repeat: an
@@ -85,33 +83,20 @@ vec2 here_uv;
 #define AT(dx, dy) textureLodOffset(u_field, here_uv, 0.0, ivec2(dx, dy)).rg
 #endif
 
-// The impulse of a drop of diameter d (mm) t seconds after it hit, at r texels from it: a zero-mean ring
-// profile (the 2D Laplacian of a Gaussian, whose radius follows the drop) pushed by a few cycles of a
-// sine under a sin^2 window, lower for bigger drops. A zero-mean push leaves no lasting dent, so the
-// centre is calm once the train has left; the few cycles make the train of rings.
 float impulse(float r, float d, float t) {
-    float f = 20.0 * sqrt(2.0 / d);        // Hz
-    float duration = 3.0 / f;              // three cycles
-    if (t < 0.0 || t >= duration) return 0.0;
-    float radius = max(1.5 * d / u_drop_shape.x, 1.2);  // texels
-    float q = r * r / (radius * radius);
-    if (q > 9.0) return 0.0;
-    float space = (1.0 - 0.5 * q) * exp(-0.5 * q);
-    float window = sin(3.14159265 * t / duration);
-    float size = d * 0.5;
-    return u_drop_shape.y * size * sqrt(size) * space * window * window * sin(6.2831853 * f * t);
+    float radius = drop_radius_texels(d);
+    return drop_push(d, t) * ring_profile(r * r / (radius * radius));
 }
 
+// The rain's rings: the drops of the 2x2 cells that can reach p, this slot's and the last's.
 float rain(vec2 p) {
     ivec2 c0 = rain_cells_near(p);
     float sum = 0.0;
-    for (int k = 0; k < 2; ++k) {
-        for (int j = 0; j < 4; ++j) {
-            vec2 spot;
-            float age, diameter;
-            if (rain_impact(c0 + ivec2(j & 1, j >> 1), k, RAIN_SLOT, spot, age, diameter))
-                sum += impulse(distance(p, spot), diameter, age);
-        }
+    for (int j = 0; j < 8; ++j) {
+        vec2 spot;
+        vec4 drop = rain_cell(c0 + ivec2(j & 1, (j >> 1) & 1), j >> 2, 0, spot);
+        vec2 d = p - spot;
+        sum += drop.w * ring_profile(dot(d, d) * drop.z);
     }
     return sum;
 }
@@ -130,7 +115,7 @@ void main() {
     float next = here.r + u_step.w * (here.r - here.g) + u_step.x * lap.x - u_step.y * lap2 +
                  u_step.z * (lap.x - lap.y) - u_level * here.r;
     vec2 centre = gl_FragCoord.xy;
-    if (u_rain.z > 0.0) next += rain(centre);
+    if (u_impacts_on) next += rain(centre);
     for (int i = 0; i < u_drop_count; ++i) {
         vec4 drop = u_drops[i];
         vec2 offset = centre - drop.xy;

@@ -211,7 +211,7 @@ std::vector<float> Device::read_texture(const Texture& texture, int face) {
     glBindFramebuffer(GL_FRAMEBUFFER, texture.framebuffer(face));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     const TextureFormat f = texture.desc().format;
-    if (f == TextureFormat::RG32I) {
+    if (f == TextureFormat::RG32I || f == TextureFormat::RGBA32I) {
         std::vector<GLint> ints(out.size());
         glReadPixels(0, 0, w, h, GL_RGBA_INTEGER, GL_INT, ints.data());
         std::transform(ints.begin(), ints.end(), out.begin(), [](GLint v) { return static_cast<float>(v); });

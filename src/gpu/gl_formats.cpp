@@ -16,6 +16,8 @@ GlFormat gl_format(TextureFormat f) {
             return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, 4};
         case TextureFormat::RGBA32F:
             return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, 4};
+        case TextureFormat::RGBA32I:
+            return {GL_RGBA32I, GL_RGBA_INTEGER, GL_INT, 4, 4};
         case TextureFormat::R8:
             return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1};
         case TextureFormat::RG8:

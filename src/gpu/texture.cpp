@@ -36,6 +36,8 @@ const char* format_name(TextureFormat f) {
             return "RGBA16F";
         case TextureFormat::RGBA32F:
             return "RGBA32F";
+        case TextureFormat::RGBA32I:
+            return "RGBA32I";
         case TextureFormat::R8:
             return "R8";
         case TextureFormat::RG8:
@@ -54,6 +56,7 @@ int bytes_per_texel(TextureFormat f) {
         case TextureFormat::RGBA16F:
             return 8;
         case TextureFormat::RGBA32F:
+        case TextureFormat::RGBA32I:
             return 16;
         case TextureFormat::R8:
             return 1;

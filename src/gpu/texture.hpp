@@ -20,8 +20,9 @@ enum class TextureFormat {
     RG32I,     // wave field, fixed point, where float targets are missing
     RGBA16F,   // filterable float: surface (height + normal), HDR colour
     RGBA32F,
-    R8,   // one 8-bit channel: a camera's Y plane
-    RG8,  // two 8-bit channels: a camera's interleaved UV plane
+    RGBA32I,  // four ints: tables of floats as bits (the rain cells), renderable wherever GLES 3 is
+    R8,       // one 8-bit channel: a camera's Y plane
+    RG8,      // two 8-bit channels: a camera's interleaved UV plane
 };
 // External: a GL_TEXTURE_EXTERNAL_OES over an EGLImage (camera dmabufs), made by create_external_image.
 enum class TextureKind { D2, Cube, External };

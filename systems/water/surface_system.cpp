@@ -8,19 +8,19 @@ Result<void> build_surface(gpu::Device& device, const WaveField& field, Surface&
     const SurfaceVariant variant{!device.caps().half_float_render_targets, field.fixed_point,
                                  field.capillary};
     // A new resolution: the same shader, a new texture (see build_wave_field).
-    if (auto built = surface.pipelines.ensure(device, variant,
-                                              [&] {
-                                                  std::vector<std::string> defines;
-                                                  if (variant.unorm) defines.emplace_back("SURFACE_UNORM");
-                                                  if (variant.periodic) defines.emplace_back("PERIODIC");
-                                                  if (variant.field_fixed_point)
-                                                      defines.push_back(fmt::format(
-                                                          "FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
-                                                  return gpu::PipelineDesc{.label = "surface",
-                                                                           .fragment = "surface.frag",
-                                                                           .defines = defines,
-                                                                           .textures = {"u_field"}};
-                                              });
+    if (auto built = surface.pipelines.ensure(
+            device, variant,
+            [&] {
+                std::vector<std::string> defines;
+                if (variant.unorm) defines.emplace_back("SURFACE_UNORM");
+                if (variant.periodic) defines.emplace_back("PERIODIC");
+                if (variant.field_fixed_point)
+                    defines.push_back(fmt::format("FIXED_POINT_SCALE {:.1f}", fixed_point_scale));
+                return gpu::PipelineDesc{.label = "surface",
+                                         .fragment = "surface.frag",
+                                         .defines = defines,
+                                         .textures = {"u_field", "u_impact_table"}};
+            });
         !built)
         return built;
     auto texture = device.create_texture(
@@ -63,11 +63,12 @@ void surface_system(gpu::Device& device, const WaveField& field, Surface& surfac
     auto pass = device.begin_pass({.label = "surface",
                                    .target = {&surface.texture, {surface.resolution, surface.resolution}},
                                    .load = gpu::LoadOp::DontCare});
-    pass.set_pipeline(built->pipeline).set_texture(0, field.newest(), surface.field_sampler);
+    // The periodic field's neighbours wrap through its repeating sampler; the reference's clamp.
+    pass.set_pipeline(built->pipeline)
+        .set_texture(0, field.newest(), surface.periodic ? field.nearest : surface.field_sampler);
     if (surface.periodic)
-        pass.set("u_rain", field.last_rain.rain)
-            .set("u_slot", field.last_rain.slot)
-            .set("u_slot_time", field.last_rain.slot_time)
+        pass.set_texture(1, field.rain_cells, surface.field_sampler)
+            .set("u_impact_grid", glm::vec2(field.last_rain.rain))
             .set("u_texel_mm", field.last_rain.texel_mm)
             .set("u_splash_gain", field.last_rain.splash);
     pass.draw_fullscreen();

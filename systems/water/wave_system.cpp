@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <span>
 
+#include "render/shader_hash.hpp"
 #include "systems/water/capillary_step.hpp"
 #include "systems/water/rain_rate.hpp"
 
@@ -52,7 +53,7 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
                 return gpu::PipelineDesc{.label = "wave step",
                                          .fragment = "wave_step.frag",
                                          .defines = defines,
-                                         .textures = {"u_field"},
+                                         .textures = {"u_field", "u_impact_table"},
                                          .uniform_blocks = {"Drops"}};
             });
         !built)
@@ -67,6 +68,20 @@ Result<void> build_wave_field(gpu::Device& device, const params::Params& params,
         auto drops = device.create_buffer({.label = "live drops", .size = sizeof(glm::vec4) * max_drops});
         if (!drops) return drops.error();
         field.drops = std::move(drops).value();
+    }
+    if (f.capillary && field.rain_cells.id() == 0) {
+        if (auto built = field.rain_cells_pipeline.ensure(
+                device, {},
+                [] { return gpu::PipelineDesc{.label = "rain cells", .fragment = "rain_cells.frag"}; });
+            !built)
+            return built;
+        auto table = device.create_texture({.label = "rain cells",
+                                            .format = gpu::TextureFormat::RGBA32I,
+                                            .width = 2 * rain_cells_max,
+                                            .height = 2 * rain_cells_max,
+                                            .render_target = true});
+        if (!table) return table.error();
+        field.rain_cells = std::move(table).value();
     }
     for (int i = 0; i < 2; ++i) {
         auto texture = device.create_texture({.label = fmt::format("wave field {}", i),
@@ -103,11 +118,27 @@ void bind_step(gpu::RenderPass& pass, const render::BuiltPipeline& step, const W
         .set("u_drop_count", drop_count);
 }
 
+// The rain cells' table for one pass (rain_cells.frag): 2 cells a side of texels in its corner.
+void draw_rain_cells(gpu::Device& device, const WaveField::Rain& rain, glm::vec4 drop_shape,
+                     WaveField& field) {
+    const render::BuiltPipeline* built = field.rain_cells_pipeline.find({});
+    if (!built) return;  // never: build_wave_field builds it with a capillary field
+    const int side = 2 * static_cast<int>(rain.rain.x);
+    auto pass = device.begin_pass(
+        {.label = "rain cells", .target = {&field.rain_cells, {side, side}}, .load = gpu::LoadOp::DontCare});
+    pass.set_pipeline(built->pipeline)
+        .set("u_rain", rain.rain)
+        .set("u_slot_keys", rain.slot_keys)
+        .set("u_slot_time", rain.slot_time)
+        .set("u_drop_shape", drop_shape);
+    pass.draw_fullscreen();
+}
+
 void capillary_steps(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                      const LiveDrops& drops, const render::BuiltPipeline& step, WaveField& field) {
     const CapillaryStep s = capillary_step(params, clock.step_seconds);
     const double size = static_cast<double>(params.get<ParamId::wave_size>());
-    const double cells = std::max(1.0, std::round(size / rain_cell_m));
+    const double cells = std::clamp(std::round(size / rain_cell_m), 1.0, double(rain_cells_max));
     const double cell_m = size / cells;
     const double rate = rain_rate_at(static_cast<double>(params.get<ParamId::rain_rate>()),
                                      static_cast<double>(params.get<ParamId::rain_drift>()), clock.sim_time);
@@ -115,6 +146,7 @@ void capillary_steps(gpu::Device& device, const params::Params& params, const Fr
         std::min(1.0, impacts_per_square_metre_second(rate) * cell_m * cell_m * rain_slot_s);
     // A drop's push in height units per second squared at the peak, per mm^1.5 of drop (wave_step.frag).
     constexpr double drop_accel = 60000.0 / 0.3;
+    const auto seed = static_cast<std::int32_t>(params.get<ParamId::rain_seed>());
     const double gain = drop_accel * static_cast<double>(params.get<ParamId::rain_intensity>()) * s.dt * s.dt;
     for (int i = 0; i < s.substeps; ++i) {
         const double back = (s.substeps - 1 - i) * s.dt;  // this pass ends this long before the step
@@ -123,20 +155,23 @@ void capillary_steps(gpu::Device& device, const params::Params& params, const Fr
         const WaveField::Rain rain{
             .rain = glm::vec4(static_cast<float>(cells), static_cast<float>(field.resolution / cells),
                               static_cast<float>(chance), static_cast<float>(marshall_palmer_slope(rate))),
-            .slot = static_cast<int>(std::fmod(slot, 1048576.0)),
+            .slot_keys = {rain_slot_key(static_cast<std::int64_t>(slot), seed),
+                          rain_slot_key(static_cast<std::int64_t>(slot) - 1, seed)},
             .slot_time = static_cast<float>(t - slot * rain_slot_s),
             .texel_mm = static_cast<float>(s.texel_m * 1e3),
-            .splash = std::min(1.0f, params.get<ParamId::rain_intensity>() / 0.3f)};
+            .splash = chance > 0.0 ? std::min(1.0f, params.get<ParamId::rain_intensity>() / 0.3f) : 0.0f};
         field.last_rain = rain;
+        const glm::vec4 drop_shape(static_cast<float>(s.texel_m * 1e3), static_cast<float>(gain),
+                                   static_cast<float>(-back), 0.0f);
+        if (chance > 0.0) draw_rain_cells(device, rain, drop_shape, field);
         auto pass = device.begin_pass(step_pass(field));
         bind_step(pass, step, field, drops.count);
         pass.set("u_step", glm::vec4(s.a, s.b, s.v, s.keep))
             .set("u_level", s.level)
-            .set("u_drop_shape", glm::vec4(static_cast<float>(s.texel_m * 1e3), static_cast<float>(gain),
-                                           static_cast<float>(-back), 0.0f))
-            .set("u_rain", rain.rain)
-            .set("u_slot", rain.slot)
-            .set("u_slot_time", rain.slot_time);
+            .set("u_drop_shape", drop_shape)
+            .set("u_impacts_on", chance > 0.0 ? 1 : 0)
+            .set_texture(1, field.rain_cells, field.nearest)
+            .set("u_impact_grid", glm::vec2(rain.rain));
         pass.draw_fullscreen();
         field.current = 1 - field.current;
     }
@@ -162,6 +197,12 @@ void wave_system(gpu::Device& device, const params::Params& params, const FrameC
     render::set_param_uniforms(pass, step->params, params);
     pass.draw_fullscreen();
     field.current = 1 - field.current;
+}
+
+std::int32_t rain_slot_key(std::int64_t slot, std::int32_t seed) {
+    constexpr std::uint32_t salt = 0x7261696eu;  // "rain": other hashes of the seed give other patterns
+    return static_cast<std::int32_t>(
+        render::shader_hash3(static_cast<std::uint32_t>(slot), static_cast<std::uint32_t>(seed), salt));
 }
 
 std::vector<float> WaveField::read_heights(gpu::Device& device) const {

@@ -2,15 +2,16 @@
 // The wave field: a height field driven by a wave equation on the GPU, ping-ponging between two textures
 // holding (height, previous height), with its own resolution. wave.model picks the equation:
 //   capillary: ripples of rain on shallow water in physical units (systems/water/capillary_step.hpp),
-//   periodic,
-//              several passes per fixed step as stability needs, rain hashed in the shader from
-//              rain.rate (systems/water/rain_rate.hpp); heights in units of 0.1 mm.
+//              periodic, several passes per fixed step as stability needs, rain from rain.rate
+//              (systems/water/rain_rate.hpp) hashed per cell of a rain grid into a small table before
+//              each pass (shaders_gles/rain_cells.frag); heights in units of 0.1 mm.
 //   reference: REFERENCE.md §1's damped wave equation, one pass per fixed step, the drops of drop_system.
 //   Where the GPU cannot render to float textures, the field is fixed-point RG32I (heights
 // times 65536), which every GLES 3.0 GPU can render to; a test checks both give the same field.
 
 #include <array>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "gpu/device.hpp"
@@ -38,9 +39,16 @@ constexpr std::size_t wave_step_variant_index(const WaveStepVariant& v) {
 // used and kept through resolution changes: a new wave.resolution compiles nothing.
 using WaveStepPipelines = render::PipelineCache<WaveStepVariant, 4, wave_step_variant_index>;
 
-// The rain's grid (wave_step.frag): cells about this wide, each with at most one drop per slot.
+// The rain's grid (rain_impacts.glsl): cells about this wide, each with at most one drop per slot, and at
+// most this many a side (wave.size's 10 m at most makes 250).
 inline constexpr double rain_cell_m = 0.04;
+inline constexpr int rain_cells_max = 256;
 inline constexpr double rain_slot_s = 0.25;  // RAIN_SLOT in the shader
+
+// The hash rain_impacts.glsl starts each cell's from for rain slot `slot` (seconds / rain_slot_s, whole)
+// under rain.seed `seed`: the same seed and time give the same drops on every screen, another seed others.
+// The slot's count wraps at 2^32 (34 years of rain).
+std::int32_t rain_slot_key(std::int64_t slot, std::int32_t seed);
 
 // Resource.
 struct WaveField {
@@ -51,14 +59,19 @@ struct WaveField {
     bool capillary = true;             // wave.model when the field was made
     WaveStepPipelines step_pipelines;  // the step reads wave.damping
     gpu::Sampler nearest;
-    gpu::Buffer drops;             // std140 vec4[max_drops]
+    gpu::Buffer drops;  // std140 vec4[max_drops]
+    // capillary: the rain cells' table (rain_cells.frag), RGBA32I, 2 rain_cells_max a side, of which the
+    // corner of 2 cells a side is drawn; made with the field, kept through resolution changes.
+    gpu::Texture rain_cells;
+    render::SinglePipelineCache rain_cells_pipeline;
     std::uint64_t generation = 0;  // the FrameClock::field_generation it was last cleared for
-    // The rain's hashing uniforms (rain_impacts.glsl) at the end of the last step, capillary only: the
-    // surface pass draws the splashes of the same drops. rain.z = 0: no rain. splash: how bright a splash
-    // is, 1 at the default rain.intensity (0.3) and above, 0 with no impulse.
+    // The rain's hashing uniforms (rain_impacts.glsl) of the last pass, capillary only: the surface pass
+    // draws the splashes of the same drops from the rain cells' table. rain.z = 0: no rain (the table was
+    // not drawn). splash: how bright a splash is, 1 at the default rain.intensity (0.3) and above, 0 with
+    // no impulse or no rain.
     struct Rain {
         glm::vec4 rain{0.0f};
-        int slot = 0;
+        glm::ivec2 slot_keys{0};  // rain_slot_key of the slot and the one before
         float slot_time = 0.0f;
         float texel_mm = 1.0f;
         float splash = 0.0f;

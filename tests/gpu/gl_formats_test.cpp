@@ -24,6 +24,7 @@ const SpecRow spec_rows[] = {
     {TextureFormat::RG32I, GL_RG32I, GL_RG_INTEGER, GL_INT, 64},
     {TextureFormat::RGBA16F, GL_RGBA16F, GL_RGBA, GL_FLOAT, 64},  // table 3.2 also allows GL_HALF_FLOAT
     {TextureFormat::RGBA32F, GL_RGBA32F, GL_RGBA, GL_FLOAT, 128},
+    {TextureFormat::RGBA32I, GL_RGBA32I, GL_RGBA_INTEGER, GL_INT, 128},
     {TextureFormat::R8, GL_R8, GL_RED, GL_UNSIGNED_BYTE, 8},
     {TextureFormat::RG8, GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 16},
 };
@@ -37,6 +38,7 @@ int components(GLenum format) {
         case GL_RG_INTEGER:
             return 2;
         case GL_RGBA:
+        case GL_RGBA_INTEGER:
             return 4;
     }
     return 0;
@@ -55,7 +57,7 @@ int type_bytes(GLenum type) {
 }
 
 TEST(GlFormats, EveryFormatHasItsSpecRow) {
-    // format_name names every enumerator and says "?" past the last one: eight formats, eight rows.
+    // format_name names every enumerator and says "?" past the last one: nine formats, nine rows.
     constexpr int formats = static_cast<int>(std::size(spec_rows));
     for (int f = 0; f < formats; ++f) EXPECT_NE(std::string(format_name(TextureFormat(f))), "?") << f;
     EXPECT_EQ(std::string(format_name(TextureFormat(formats))), "?") << "a format without a row here";
