@@ -59,8 +59,9 @@ std::vector<Engine::Plugin> puddle_features(std::unique_ptr<StopSignals>& signal
             return systems::add_service_plugin(w, s, {[&stop] { return stop.take_reload(); }},
                                                std::move(service));
         },
-        [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
+        // The schedule asks live tuning for its changes, which live tuning then applies in the same frame.
         systems::add_schedule,
+        [&](ecs::World& w, ecs::Schedule& s) { return systems::add_live_tuning(w, s, std::move(tuning)); },
         systems::add_display_power,
         systems::add_puddle_plugin,
         systems::add_remote_plugin,

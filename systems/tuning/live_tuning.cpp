@@ -56,6 +56,16 @@ bool act_on(LiveTuning& t, const TuningRequest& request, double now) {
         layer_changed(t, preset->source, now);
         return false;
     }
+    if (const auto* entries = std::get_if<SetSchedule>(&request)) {
+        bool forgot = false;
+        for (int entry : entries->forget_knobs_of) forgot |= forget_knobs_set_by(t, entry);
+        if (t.layers.set_active_schedule(entries->active) || forgot) {
+            in(t).schedule_reason = entries->reason;
+            in(t).layers_changed = true;
+            in(t).change_reason = in(t).schedule_reason.c_str();
+        }
+        return false;
+    }
     if (std::holds_alternative<SaveState>(request)) {
         in(t).state_dirty = true;
         start_state_save(t);

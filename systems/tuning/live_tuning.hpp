@@ -59,6 +59,7 @@ private:
         std::vector<io::KnobAction> actions;
         bool layers_changed = false;              // a layer changed; Params is not yet its composition
         const char* change_reason = "";           // for the log line
+        std::string schedule_reason;              // change_reason of the last SetSchedule points here
         std::optional<std::int64_t> apply_at_ns;  // wall.clock = "realtime": as a remote message asked
         bool state_dirty = false;                 // the knob state has changes not on disk
         std::string last_save_problem;            // logged once; not again until a save works

@@ -63,7 +63,7 @@ std::optional<schedule::Calendar> make_calendar(const params::Config& config) {
     return schedule::Calendar(std::move(rules), where);
 }
 
-bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params, double now) {
+bool schedule_step(ScheduleRun& run, const LiveTuning& tuning, TuningInbox& inbox, double now) {
     const bool reloaded = run.config_generation != tuning.config_generation();
     const bool clock_went_back = run.evaluated && now < run.last_evaluated;
     const bool zone_changed = std::exchange(run.zone_changed, false);
@@ -84,24 +84,25 @@ bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params,
         next = run.calendar->next_transition(now);
     }
     // Knob values are forgotten at a transition only, not when a reload or a clock step re-evaluates.
-    bool knobs_cleared = false;
+    std::vector<int> forget;
     std::string reason = "schedule";
     if (run.evaluated && !reloaded && !clock_went_back && !zone_changed && last &&
         last->at > run.last_evaluated) {
         // A pointer, not a copied optional: GCC 12 at -O3 warned (-Wmaybe-uninitialized) on the copy.
         const schedule::Transition* fired =
             last->kind == schedule::Transition::Kind::fires ? &*last : nullptr;
-        for (int entry : entries_of_transition(tuning.layers.active_schedule(), active, fired))
-            knobs_cleared |= forget_knobs_set_by(tuning, entry);
+        forget = entries_of_transition(tuning.layers.active_schedule(), active, fired);
         reason = fmt::format("schedule: {} {}",
                              describe_entry(config.schedule[static_cast<std::size_t>(last->entry)]),
                              kind_text(last->kind));
     }
-    const bool changed = tuning.layers.set_active_schedule(std::move(active)) || knobs_cleared;
+    const bool changed = active != tuning.layers.active_schedule() || !forget.empty();
     run.evaluated = true;
     run.last_evaluated = now;
     run.next_evaluation = next ? next->at : now + day_seconds;
-    if (changed) apply_layers(tuning, params, reason);
+    if (changed)
+        inbox.push(SetSchedule{
+            .active = std::move(active), .forget_knobs_of = std::move(forget), .reason = std::move(reason)});
     if (next && (changed || reloaded || zone_changed))
         spdlog::info("schedule: next: {}", describe_transition(config, *next));
     return changed;
@@ -124,10 +125,10 @@ bool zone_check_step(ZoneCheck& check, std::uint64_t config_generation, double n
     return true;
 }
 
-void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, LiveTuning& tuning,
-                     params::Params& params) {
+void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, const LiveTuning& tuning,
+                     TuningInbox& inbox) {
     if (zone_check_step(zone, tuning.config_generation(), clock.seconds())) run.zone_changed = true;
-    schedule_step(run, tuning, params, clock.seconds());
+    schedule_step(run, tuning, inbox, clock.seconds());
 }
 
 void activate_schedule(LiveTuning& tuning, double now) {

@@ -1,10 +1,12 @@
 #pragma once
 // The schedule layer while the display runs: the config's [[schedule]] entries (schedule::Calendar)
-// evaluated against the wall clock, in the input stage right after live tuning. It works only at a
+// evaluated against the wall clock, in the input stage right before live tuning, which it asks for the
+// change (a SetSchedule request in the TuningInbox) as every other source does. It works only at a
 // transition (the next one is cached; other frames compare two doubles and allocate nothing), after a
-// config reload, and when the wall clock goes back (an NTP correction). At a transition the knob values
-// of the parameters the entries concerned set are forgotten: a knob turned during a window holds until
-// the next transition, then the schedule applies again.
+// config reload (seen the frame after live tuning made it), and when the wall clock goes back (an NTP
+// correction). At a transition the knob values of the parameters the entries concerned set are forgotten:
+// a knob turned during a window holds until the next transition, then the schedule applies again. On a
+// wall (wall.clock = "realtime") the change then lands at the wall's next change step, as a reload does.
 
 #include <cstdint>
 #include <filesystem>
@@ -56,13 +58,14 @@ bool zone_check_step(ZoneCheck& check, std::uint64_t config_generation, double n
 // The calendar of a config's entries (none without entries).
 std::optional<schedule::Calendar> make_calendar(const params::Config& config);
 
-// Sets the entries active at `now` in `tuning.layers` when due (see above) and returns true when the
-// layers changed; `params` is then recomposed and the change logged ("schedule: schedule[2] starts: ...").
-bool schedule_step(ScheduleRun& run, LiveTuning& tuning, params::Params& params, double now);
+// When due (see above), asks live tuning through `inbox` to put the entries active at `now` in force and
+// returns true when it asked (the entries in force differ, or a transition forgets knob values); live
+// tuning's next step recomposes Params and logs the change ("schedule: schedule[2] ... starts: ...").
+bool schedule_step(ScheduleRun& run, const LiveTuning& tuning, TuningInbox& inbox, double now);
 // Input stage: schedule_step at the wall clock's time.
 // A zone change (zone_check_step) is evaluated again as a reload is: no knob is forgotten.
-void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, LiveTuning& tuning,
-                     params::Params& params);
+void schedule_system(const WallClock& clock, ZoneCheck& zone, ScheduleRun& run, const LiveTuning& tuning,
+                     TuningInbox& inbox);
 
 // Start-up and --print-config: the entries active at `now`, set in the layers without clearing knobs.
 void activate_schedule(LiveTuning& tuning, double now);
@@ -75,7 +78,7 @@ std::string describe_transition(const params::Config& config, const schedule::Tr
 std::string local_time_text(double t);
 
 // Inserts WallClock (systems/clock/wall_clock.hpp) and ScheduleRun and adds schedule_system to the input
-// stage (after live tuning, which it needs).
+// stage: add it before live tuning, which acts on its requests in the same frame.
 Result<void> add_schedule(ecs::World& world, ecs::Schedule& schedule);
 
 }  // namespace puddle::systems

@@ -1,8 +1,9 @@
 #pragma once
 // What other features ask of live tuning: a remote value or preset, a config reload (SIGHUP, a remote
-// command), a state save. Sources push requests into the TuningInbox resource; only live tuning drains it,
-// first thing in its step, and acts on them in order, so every change has one path and the flags that track
-// a change (pending, why, when a wall applies it, unsaved) are live tuning's own.
+// command), a state save, the schedule's entries in force. Sources push requests into the TuningInbox
+// resource; only live tuning drains it, first thing in its step, and acts on them in order, so every change
+// has one path and the flags that track a change (pending, why, when a wall applies it, unsaved) are live
+// tuning's own.
 
 #include <cstddef>
 #include <cstdint>
@@ -36,8 +37,17 @@ struct ReloadConfig {
 };
 // Write the knob and remote state now (the "save" button or command), on the saver thread.
 struct SaveState {};
+// The schedule's entries in force at a transition, a reload or a clock step (systems/tuning/
+// schedule_system.hpp): the entries now active (indices into the config's [[schedule]]), those whose knob
+// and remote values a transition forgets, and the reason for the log line ("schedule: schedule[2] (...)
+// starts"). Asked only when something changes, so its vectors and string are allocated at a transition.
+struct SetSchedule {
+    std::vector<int> active;
+    std::vector<int> forget_knobs_of;
+    std::string reason;
+};
 
-using TuningRequest = std::variant<SetRemoteValue, SelectPreset, ReloadConfig, SaveState>;
+using TuningRequest = std::variant<SetRemoteValue, SelectPreset, ReloadConfig, SaveState, SetSchedule>;
 
 // Resource: the queue. Bounded: a source that floods it (the remote's own inbox is bounded too) loses the
 // newest requests, counted in `dropped` and logged by live tuning.

@@ -30,8 +30,8 @@ std::vector<std::string> binary_schedule() {
         "input/begin frame (reads Params, AdaptiveScale; writes Display, Device, OutputCanvas, RenderTarget)",
         "input/gpu timer begin if output on (writes AdaptiveScale)",
         "input/reload signal (writes ReloadSignal, TuningInbox)",
+        "input/schedule (reads WallClock, LiveTuning; writes ZoneCheck, ScheduleRun, TuningInbox)",
         "input/live tuning (writes TuningInbox, LiveTuning, Params)",
-        "input/schedule (reads WallClock; writes ZoneCheck, ScheduleRun, LiveTuning, Params)",
         "input/display power (reads Params; writes Display, Device, OutputPower, DisplayPower)",
         "input/synced changes if wall.clock is realtime (reads WallClock, FrameClock, OutputPower; writes "
         "LiveTuning, Params, WallSteps)",

@@ -208,10 +208,11 @@ TEST(FrameAllocation, SteadyStateFramesWithAScheduleAllocateNothing) {
     ASSERT_TRUE(tuning.layers.set_config(std::move(*config)));
     auto engine =
         app::Engine::create(params::Params{}, display, {},
-                            {[&](ecs::World& world, ecs::Schedule& schedule) {
+                            {systems::add_schedule,
+                             [&](ecs::World& world, ecs::Schedule& schedule) {
                                  return systems::add_live_tuning(world, schedule, std::move(tuning));
                              },
-                             systems::add_schedule, systems::add_display_power, systems::add_puddle_plugin});
+                             systems::add_display_power, systems::add_puddle_plugin});
     ASSERT_TRUE(engine.ok()) << engine.error().message;
     (*engine)->world().resource<systems::WallClock>().now_ns = [] {
         return std::int64_t{1'780'000'000 + 3600} * systems::ns_per_second;

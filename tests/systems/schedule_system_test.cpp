@@ -31,8 +31,12 @@ struct Rig {
         EXPECT_TRUE(r) << r.error().message;
         params.replace_with(tuning.layers.compose());
     }
-    // One frame's schedule step at `t`.
-    bool at(double t) { return schedule_step(run, tuning, params, t); }
+    // One frame's schedule step at `t`, and live tuning's, which acts on what the schedule asked.
+    bool at(double t) {
+        const bool asked = schedule_step(run, tuning, inbox, t);
+        live_tuning_step(inbox, tuning, params, t);
+        return asked;
+    }
     // The config file becomes `text` and is reloaded, as an edit or SIGHUP does.
     void reload(const std::string& text) {
         tuning.config_path = dir.write("puddle.toml", text);
@@ -41,6 +45,7 @@ struct Rig {
     test::TempDir dir;
     bool power() const { return params.get<ParamId::display_power>(); }
     LiveTuning tuning;
+    TuningInbox inbox;
     params::Params params;
     ScheduleRun run;
 };
@@ -254,7 +259,10 @@ TEST(ScheduleSystem, ATimeZoneChangeIsEvaluatedAgainAtAReloadAndWithinAMinute) {
     double now = local(2026, 6, 5, 22, 0);
     WallClock clock;
     clock.now_ns = [&] { return static_cast<std::int64_t>(now) * ns_per_second; };
-    const auto frame = [&] { schedule_system(clock, zone, rig.run, rig.tuning, rig.params); };
+    const auto frame = [&] {
+        schedule_system(clock, zone, rig.run, rig.tuning, rig.inbox);
+        live_tuning_step(rig.inbox, rig.tuning, rig.params, now);
+    };
     frame();
     EXPECT_DOUBLE_EQ(rig.run.next_evaluation, local(2026, 6, 5, 23, 0));
     const double berlin_23 = rig.run.next_evaluation;
@@ -274,6 +282,29 @@ TEST(ScheduleSystem, ATimeZoneChangeIsEvaluatedAgainAtAReloadAndWithinAMinute) {
     rig.reload(night_off);
     frame();
     EXPECT_DOUBLE_EQ(rig.run.next_evaluation, berlin_23);
+}
+
+// The schedule changes nothing itself: it asks live tuning through the inbox, as every other source does,
+// and the change is in Params once live tuning has acted on it.
+TEST(ScheduleSystem, AsksLiveTuningThroughTheInbox) {
+    test::TzGuard tz("UTC");
+    Rig rig(night_off);
+    rig.at(local(2026, 6, 5, 12, 0));
+    ASSERT_TRUE(rig.power());
+    ASSERT_TRUE(schedule_step(rig.run, rig.tuning, rig.inbox, local(2026, 6, 5, 23, 0)));
+    ASSERT_EQ(rig.inbox.requests.size(), 1u);
+    const auto* asked = std::get_if<SetSchedule>(&rig.inbox.requests[0]);
+    ASSERT_NE(asked, nullptr);
+    EXPECT_EQ(asked->active, std::vector<int>{0});
+    EXPECT_EQ(asked->reason, "schedule: schedule[1] (daily from 23:00 to 07:00) starts");  // 1-based, as in the file
+    EXPECT_TRUE(rig.power()) << "nothing changes before live tuning acts";
+    EXPECT_TRUE(rig.tuning.layers.active_schedule().empty());
+    live_tuning_step(rig.inbox, rig.tuning, rig.params, local(2026, 6, 5, 23, 0));
+    EXPECT_FALSE(rig.power());
+    EXPECT_TRUE(rig.inbox.requests.empty());
+    // Nothing due: nothing asked.
+    EXPECT_FALSE(schedule_step(rig.run, rig.tuning, rig.inbox, local(2026, 6, 6, 1, 0)));
+    EXPECT_TRUE(rig.inbox.requests.empty());
 }
 
 TEST(ScheduleSystem, TheWallClockGoingBackIsEvaluatedAgain) {

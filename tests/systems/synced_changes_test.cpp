@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <optional>
 
+#include "schedule/tz_guard.hpp"
 #include "support/test_support.hpp"
+#include "systems/tuning/schedule_system.hpp"
 
 namespace puddle::systems {
 namespace {
@@ -22,8 +24,9 @@ const char* const config_after = "[wall]\nclock = \"realtime\"\n[rain]\nintensit
 
 // One screen of a wall: its own config file, live tuning, and the frame's input and simulate stages.
 struct Screen {
-    explicit Screen(std::int64_t phase_ns) : now(start_ns + phase_ns) {
-        config_path = dir.write("puddle.toml", config_before);
+    explicit Screen(std::int64_t phase_ns, const char* config_text = config_before)
+        : now(start_ns + phase_ns) {
+        config_path = dir.write("puddle.toml", config_text);
         tuning.emplace(params::ParamLayers(params::Presets::load({}), {}));
         tuning->config_path = config_path;
         auto config = params::load_config_file(config_path);
@@ -36,6 +39,7 @@ struct Screen {
     // One frame: the input stage's systems in the binary's order, then the due steps, each noting the
     // intensity it simulated with.
     void frame() {
+        schedule_step(schedule, *tuning, inbox, static_cast<double>(now) * 1e-9);
         live_tuning_step(inbox, *tuning, params, static_cast<double>(now) * 1e-9);
         synced_changes_system(wall, clock, power, *tuning, params, steps);
         wall_steps_system(wall, power, look, params, steps, clock);
@@ -54,6 +58,7 @@ struct Screen {
     test::TempDir dir;
     std::string config_path;
     TuningInbox inbox;
+    ScheduleRun schedule;
     std::optional<LiveTuning> tuning;
     params::Params params;
     std::int64_t now;
@@ -80,6 +85,24 @@ TEST(SyncedChanges, AConfigEditReadAtDifferentMomentsAppliesAtTheSameStep) {
     EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(read_at, 1.0), 60.0));
     EXPECT_EQ(a.steps.change_step, 0u);
     EXPECT_FALSE(pending_change(*a.tuning));
+}
+
+// A schedule's transition is a wall time, which each screen passes in its own frame: it applies at the
+// wall's change step like any change, so the screens switch at the same step.
+TEST(SyncedChanges, AScheduleTransitionAppliesAtTheSameStepOnEveryScreen) {
+    test::TzGuard tz("UTC");
+    const char* const scheduled =
+        "[wall]\nclock = \"realtime\"\n[[schedule]]\nfrom = \"12:01\"\nto = \"13:00\"\n"
+        "set = { \"rain.intensity\" = 0.8 }\n";
+    Screen a(0, scheduled), b(7'000'000, scheduled);
+    for (int i = 0; i < 30; ++i) a.frame(), b.frame();
+    ASSERT_EQ(a.params.get<ParamId::rain_intensity>(), 0.3f) << "12:00: the entry is not in force yet";
+    const std::int64_t transition = start_ns - 400'000'000 + 60 * ns_per_second;  // 12:01:00 UTC
+    while (a.now < transition + 3 * ns_per_second) a.frame(), b.frame();
+    ASSERT_TRUE(a.first_new_step && b.first_new_step);
+    EXPECT_EQ(*a.first_new_step, *b.first_new_step);
+    // Read in the frame that passed 12:01:00: the step of the next whole second after it, plus one second.
+    EXPECT_EQ(static_cast<std::int64_t>(*a.first_new_step), step_at(change_boundary(transition, 1.0), 60.0));
 }
 
 // While the output is off nothing is simulated, yet a pending change still applies at its time. Held for a
