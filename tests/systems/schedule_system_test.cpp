@@ -296,7 +296,8 @@ TEST(ScheduleSystem, AsksLiveTuningThroughTheInbox) {
     const auto* asked = std::get_if<SetSchedule>(&rig.inbox.requests[0]);
     ASSERT_NE(asked, nullptr);
     EXPECT_EQ(asked->active, std::vector<int>{0});
-    EXPECT_EQ(asked->reason, "schedule: schedule[1] (daily from 23:00 to 07:00) starts");  // 1-based, as in the file
+    EXPECT_EQ(asked->reason,
+              "schedule: schedule[1] (daily from 23:00 to 07:00) starts");  // 1-based, as in the file
     EXPECT_TRUE(rig.power()) << "nothing changes before live tuning acts";
     EXPECT_TRUE(rig.tuning.layers.active_schedule().empty());
     live_tuning_step(rig.inbox, rig.tuning, rig.params, local(2026, 6, 5, 23, 0));
