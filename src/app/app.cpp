@@ -169,8 +169,12 @@ Result<void> frame_loop(DisplayRun& run, const CliOptions& o) {
         }
         // Headless runs advance a fixed step per frame, so the same command line gives the same image.
         const auto now = clock::now();
-        const double dt =
-            run.headless || o.fixed_step ? fixed_dt : std::chrono::duration<double>(now - last).count();
+        const bool held = o.hold_after > 0 && n >= o.hold_after;
+        if (held && n == o.hold_after)
+            spdlog::info("hold: the picture of frame {} stays on screen from now on (--hold-after)", n);
+        const double dt = held                           ? 0.0
+                          : run.headless || o.fixed_step ? fixed_dt
+                                                         : std::chrono::duration<double>(now - last).count();
         last = now;
         if (!run.screenshot.empty() && run.frames != 0 && n == run.frames - 1) e.capture_next_frame();
         bool wall_shot_now = false;

@@ -29,6 +29,10 @@ struct CliOptions {
     std::optional<int> seed;  // shorthand for --set rain.seed=N
     double fps_cap = 0;       // 0: the display's pace (vblank), headless: as fast as possible
     bool fixed_step = false;  // every backend advances 1/60 s (or 1/fps-cap) per frame, as headless does
+    // --hold-after N: from frame N+1 on, simulated time stops, so the picture of frame N stays on screen
+    // while the display, reloads, knobs and the watchdog carry on (a screen checked against a headless
+    // render of N frames knows what it shows). 0: off.
+    long hold_after = 0;
     std::string log_level = "info";
     std::string camera;          // --camera DEVICE|mock:PATH: environment.source = camera from that device
     double stats_every = 0;      // --stats[=SECONDS]: log fps, frame-time percentiles, CPU and memory; 0: off

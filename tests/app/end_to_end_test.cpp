@@ -51,6 +51,24 @@ TEST(EndToEnd, SameCommandLineGivesTheSameImage) {
     EXPECT_EQ(compare_images(*ia, *ib, 0).max_channel_diff, 0);
 }
 
+// --hold-after N: the frames after the Nth show the Nth frame's picture, exactly, and say so once; without
+// the hold the same run has moved on.
+TEST(EndToEnd, HoldAfterKeepsThePictureOfFrameN) {
+    TempDir dir;
+    const std::string held = (dir / "held.png").string(), five = (dir / "five.png").string(),
+                      moved = (dir / "moved.png").string();
+    const std::string run = "-b headless --size 96x54 --seed 4 --set rain.rate=40 ";
+    const CommandResult h = run_puddle(run + "--frames 12 --hold-after 5 --screenshot " + held);
+    ASSERT_EQ(h.exit_code, 0) << h.output;
+    ASSERT_EQ(run_puddle(run + "--frames 5 --screenshot " + five).exit_code, 0);
+    ASSERT_EQ(run_puddle(run + "--frames 12 --screenshot " + moved).exit_code, 0);
+    auto ih = assets::read_image(held), i5 = assets::read_image(five), im = assets::read_image(moved);
+    ASSERT_TRUE(ih.ok() && i5.ok() && im.ok());
+    EXPECT_EQ(compare_images(*ih, *i5, 0).max_channel_diff, 0) << "frame 12 of the held run is frame 5";
+    EXPECT_GT(compare_images(*im, *i5, 0).max_channel_diff, 0) << "without the hold, frame 12 differs";
+    EXPECT_NE(h.output.find("hold: the picture of frame 5 stays on screen"), std::string::npos) << h.output;
+}
+
 TEST(EndToEnd, BadConfigExitsTwoNamingFileLineAndRange) {
     TempDir dir;
     const std::string cfg = dir.write("bad.toml", "[rain]\ndrop_count = 10\nintensity = 9.5\n");

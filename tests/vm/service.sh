@@ -13,9 +13,9 @@
 #   service-stop      systemctl stop ends it; (the host) the console is back as it was
 #   service-purge     dpkg --purge removes the unit, /var/lib/puddle, /var/cache/puddle and the config, nothing runs
 # The pace: the test's config (as a user edits /etc/puddle/puddle.toml) is small enough for llvmpipe
-# in an emulated CPU, and a drop-in adds --fixed-step --fps-cap and --log-level debug to ExecStart (as
-# `systemctl edit puddle` would; nothing in it touches the hardening), so frame N on screen is the
-# picture a headless render of N frames gives on the host and the journal says which frame is shown.
+# in an emulated CPU, and a drop-in adds --fixed-step --fps-cap, --hold-after SVC_FRAME and --log-level
+# debug to ExecStart (as `systemctl edit puddle` would; nothing in it touches the hardening), so the
+# picture held on screen is the one a headless render of SVC_FRAME frames gives on the host.
 # shellcheck shell=bash disable=SC2154 # out, say, screendump: guest.sh
 
 svc=puddle.service
@@ -64,22 +64,19 @@ svc_wait_active() {  # old_pid seconds
     return 1
 }
 
-# When frame SVC_FRAME is on screen: stops the process, asks the host for a screendump NAME and
-# notes the frame the journal says is shown (it is the one asked for unless the next flip was faster
-# than the journal), then lets it go on.
+# Once the held picture of frame SVC_FRAME is on screen (the drop-in's --hold-after: every later frame is
+# the same picture), asks the host for a screendump NAME and notes the frame. Two flips after the hold
+# began, every flip done or pending shows the held picture, so what the host sees is certain; stopping
+# the process at a journal line could not say that: a flip queued before the stop completes during it.
 svc_screendump() {  # name
-    local inv pid shown
-    inv=$(svc_show InvocationID) pid=$(svc_show MainPID)
-    if ! svc_wait_line "$inv" "kms: frame $SVC_FRAME on screen" 120 >/dev/null; then
-        say "FAIL $1: frame $SVC_FRAME never reached the screen (journalctl -u puddle)"
+    local inv
+    inv=$(svc_show InvocationID)
+    if ! svc_wait_line "$inv" "hold: the picture of frame $SVC_FRAME stays on screen*" 120 >/dev/null ||
+        ! svc_wait_line "$inv" "kms: frame $((SVC_FRAME + 2)) on screen" 60 >/dev/null; then
+        say "FAIL $1: the held frame $SVC_FRAME never reached the screen (journalctl -u puddle)"
         return 1
     fi
-    kill -STOP "$pid"
-    sleep 0.5
-    shown=$(journalctl -o cat "_SYSTEMD_INVOCATION_ID=$inv" | grep -o 'kms: frame [0-9]* on screen' |
-        tail -n 1 | awk '{ print $3 }')
-    screendump "$1" && echo "$1 $shown" >>"$svc_shots"
-    kill -CONT "$pid"
+    screendump "$1" && echo "$1 $SVC_FRAME" >>"$svc_shots"
 }
 
 svc_install() {
@@ -140,8 +137,8 @@ svc_configure() {
     local exec_start
     exec_start=$(grep -m1 '^ExecStart=' "$(svc_show FragmentPath)")
     mkdir -p /etc/systemd/system/$svc.d
-    printf '[Service]\nTimeoutStartSec=300\nWatchdogSec=20\nExecStart=\n%s --fixed-step --fps-cap %s --log-level debug%s\n' \
-        "$exec_start" "$VM_FPS" "$gpio" >/etc/systemd/system/$svc.d/vm-test.conf
+    printf '[Service]\nTimeoutStartSec=300\nWatchdogSec=20\nExecStart=\n%s --fixed-step --fps-cap %s --hold-after %s --log-level debug%s\n' \
+        "$exec_start" "$VM_FPS" "$SVC_FRAME" "$gpio" >/etc/systemd/system/$svc.d/vm-test.conf
     systemctl daemon-reload
 }
 
