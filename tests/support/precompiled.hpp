@@ -3,9 +3,8 @@
 // fmt and the standard headers most tests include. Parsing these took about half of each test file's
 // compile; a test still includes what it uses, so it compiles without this header too.
 
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
