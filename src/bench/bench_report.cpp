@@ -99,8 +99,8 @@ bench::ShaderCost shader_cost(params::RenderMethod method) {
     return bench::estimate_shader_cost(shader->source, Params{}.get<ParamId::render_march_steps>());
 }
 
-// The other looks' shaders, as their systems build them (systems/ocean, street, rain_overlay). Their loops
-// run to named constants and uniforms the estimate cannot read, so each counts at most 8 trips (the
+// The other looks' shaders, as their systems build them (systems/ocean, street, window, rain_overlay). Their
+// loops run to named constants and uniforms the estimate cannot read, so each counts at most 8 trips (the
 // ocean's octaves; its reference march of up to 200 steps as 8): a figure to compare runs by, not a
 // per-pixel count.
 constexpr int other_shader_loop_cap = 8;
@@ -113,6 +113,7 @@ const std::vector<OtherShader>& other_shaders() {
     static const std::vector<OtherShader> all{{"ocean secant", "ocean.frag", {"OCEAN_SECANT"}},
                                               {"ocean reference", "ocean.frag", {}},
                                               {"street", "street.frag", {}},
+                                              {"window", "window.frag", {}},
                                               {"rain streaks", "rain_streaks.frag", {}}};
     return all;
 }

@@ -7,6 +7,7 @@
 // tile by rendering at its size; the legend (tile -> look) is printed one line each, left to right and
 // top to bottom.
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,7 @@
 #include "app/engine.hpp"
 #include "app/startup.hpp"
 #include "assets/image_io.hpp"
+#include "params/param_types.hpp"
 #include "systems/puddle/puddle_plugin.hpp"
 
 namespace {
@@ -38,8 +40,11 @@ std::vector<Look> looks_to_show(const app::CliOptions& base) {
     const auto tuning = app::load_tuning(base, app::StartFor::check);
     if (tuning)
         for (const std::string& name : tuning->layers.presets().names()) looks.push_back({name, name, {}});
-    looks.push_back({"scene.kind = ocean", "", {"scene.kind=ocean"}});
-    looks.push_back({"scene.kind = street", "", {"scene.kind=street"}});
+    // Every other scene params.def lists, so a new look is on the sheet without naming it here.
+    for (const std::string_view scene : params::choice_names<params::SceneKind>())
+        if (scene != params::choice_name(params::SceneKind::puddle))
+            looks.push_back(
+                {fmt::format("scene.kind = {}", scene), "", {fmt::format("scene.kind={}", scene)}});
     return looks;
 }
 

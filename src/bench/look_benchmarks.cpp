@@ -42,6 +42,7 @@ const std::vector<Look>& looks() {
         {"ocean_reference", {"scene.kind=ocean", "ocean.method=reference"}},
         {"street", {"scene.kind=street"}},
         {"street_rain", {"scene.kind=street", "overlay.rain=true"}},
+        {"window", {"scene.kind=window"}},
         // Where the default's time goes: without its streaks, within the reference's box.
         {"puddle_no_streaks", {"overlay.rain=false"}},
         {"puddle_box", {"puddle.shape=box"}},

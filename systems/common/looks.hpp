@@ -24,6 +24,9 @@ struct LookEntry {
     // Has them built off the frame thread (render::PipelineCache::request); true once all are ready.
     // Called every frame while the look is chosen and not yet shown.
     std::function<bool(gpu::Device&)> request;
+    // Whether the rain overlay's streaks (overlay.rain) fall in front of this look. The window's glass is
+    // in focus and the rain beyond it is not, so sharp streaks there would be wrong.
+    bool takes_rain_overlay = true;
 
     bool matches(const ShownLook& look) const {
         return look.scene == scene && (!drops || look.drops == *drops);
@@ -38,6 +41,9 @@ struct Looks {
     // The entry that draws `look`, or null for a look that needs none of its own (the puddle with pulse
     // drops: its passes are built with the wave field).
     const LookEntry* find(const ShownLook& look) const;
+    // Whether `look` has the rain overlay's streaks when overlay.rain is on (LookEntry::takes_rain_overlay;
+    // a look without an entry does).
+    bool takes_rain_overlay(const ShownLook& look) const;
 };
 
 // Start-up, after every look's plugin: builds the pipelines of the look the config chose.

@@ -1,5 +1,7 @@
 #include "systems/common/shown_look.hpp"
 
+#include "systems/common/looks.hpp"
+
 namespace puddle::systems {
 
 using params::ParamId;
@@ -21,23 +23,9 @@ ShownLook selected_look(const params::Params& params) {
 }
 
 std::string describe(const ShownLook& look) {
-    switch (look.scene) {
-        case Scene::ocean:
-            return "ocean";
-        case Scene::street:
-            return "street";
-        case Scene::puddle:
-            break;
-    }
-    switch (look.drops) {
-        case DropModel::analytic:
-            return "puddle with analytic drops";
-        case DropModel::grid:
-            return "puddle with grid drops";
-        case DropModel::pulse:
-            break;
-    }
-    return "puddle with pulse drops";
+    // Another scene by its scene.kind choice, so a new look needs no line here.
+    if (look.scene != Scene::puddle) return std::string(params::choice_name(look.scene));
+    return "puddle with " + std::string(params::choice_name(look.drops)) + " drops";
 }
 
 }  // namespace puddle::systems
@@ -63,8 +51,11 @@ ecs::RunCondition wave_field_in_use() {
 }
 
 ecs::RunCondition rain_overlay_on() {
-    return {"the rain overlay is on",
-            [](ecs::World& w) { return w.resource<params::Params>().get<params::ParamId::overlay_rain>(); }};
+    return {"the rain overlay is on", [](ecs::World& w) {
+                if (!w.resource<params::Params>().get<params::ParamId::overlay_rain>()) return false;
+                const Looks* looks = w.try_resource<Looks>();
+                return !looks || looks->takes_rain_overlay(w.resource<ShownLook>());
+            }};
 }
 
 }  // namespace puddle::systems

@@ -33,7 +33,8 @@ ecs::RunCondition drops_are(DropModel drops);  // the puddle with these drops: "
 // The puddle's surface comes from the simulated wave field only with the pulse drops; analytic and grid
 // drops write it themselves, and the other scenes need no simulation.
 ecs::RunCondition wave_field_in_use();
-// overlay.rain is on: "the rain overlay is on" (it draws over whichever look is shown).
+// overlay.rain is on and the look shown takes the streaks (Looks::takes_rain_overlay): "the rain overlay
+// is on" (it draws over whichever look is shown, but the window).
 ecs::RunCondition rain_overlay_on();
 
 }  // namespace puddle::systems

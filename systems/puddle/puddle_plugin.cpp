@@ -26,6 +26,7 @@
 #include "systems/water/drop_system.hpp"
 #include "systems/water/surface_system.hpp"
 #include "systems/water/wave_system.hpp"
+#include "systems/window/window_system.hpp"
 
 namespace puddle::systems {
 
@@ -166,6 +167,7 @@ Result<void> add_puddle_plugin(ecs::World& world, ecs::Schedule& schedule) {
     schedule.add(Stage::Render, "puddle", puddle_system).run_if(look_is(Scene::puddle)).run_if(output_on());
     add_ocean_plugin(world, schedule);
     add_street_plugin(world, schedule);
+    add_window_plugin(world, schedule);
     if (auto r = add_rain_overlay_plugin(world, schedule); !r) return r;
     // The pipelines of the look the config chose are built now, so a broken shader stops start-up with its
     // message; looks chosen later are built off the frame thread by the look switch.

@@ -105,9 +105,9 @@ TEST(BenchReport, FiguresAreRatiosOfTheRunsThereAreAndTheShaderCosts) {
     EXPECT_GT(f.at("shader/raymarch texture fetches"), f.at("shader/intersect texture fetches"));
     Collector none(&display);
     const Figures costs_only = figures(none);
-    EXPECT_EQ(costs_only.size(), 4u + 2u * 4u)
-        << "the puddle's two methods and the other looks' four shaders";
-    for (const char* look : {"ocean secant", "ocean reference", "street", "rain streaks"})
+    EXPECT_EQ(costs_only.size(), 4u + 2u * 5u)
+        << "the puddle's two methods and the other looks' five shaders";
+    for (const char* look : {"ocean secant", "ocean reference", "street", "window", "rain streaks"})
         EXPECT_GT(costs_only.at(fmt::format("shader/{} alu ops", look)), 0.0) << look;
     EXPECT_EQ(costs_only.at("shader/raymarch alu ops"), f.at("shader/raymarch alu ops"));
 }

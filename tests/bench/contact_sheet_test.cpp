@@ -30,7 +30,8 @@ TEST(ContactSheet, OneTileALookInTheLegendsOrder) {
     for (std::size_t at = r.output.find("row "); at != std::string::npos;
          at = r.output.find("\nrow ", at + 1))
         ++looks;
-    EXPECT_GE(looks, 9) << "the default, six shipped presets, the ocean and the street";
+    EXPECT_GE(looks, 10) << "the default, six shipped presets, the ocean, the street and the window";
+    EXPECT_NE(r.output.find(": scene.kind = window\n"), std::string::npos) << "every scene params.def lists";
     auto image = assets::read_image(sheet);
     ASSERT_TRUE(image) << image.error().message;
     EXPECT_EQ(image->width, 3 * 64);

@@ -41,6 +41,7 @@ const std::vector<SceneCase>& scene_cases() {
         {"puddle_grid", {"drops.model=grid"}, 4},
         {"ocean", {"scene.kind=ocean"}, 4},
         {"street", {"scene.kind=street"}, 4},
+        {"window", {"scene.kind=window"}, 4},
         {"rain_overlay", {"overlay.rain=true", "overlay.rain_opacity=1"}, 30},
     };
     return cases;

@@ -37,6 +37,8 @@ inline const std::vector<std::string> puddle_plugin_schedule = {
     "OceanRenderer)",
     "render/street if look is street and output on (reads Params, FrameClock, RenderTarget; writes Device, "
     "StreetRenderer)",
+    "render/window if look is window and output on (reads Params, FrameClock, RenderTarget; writes Device, "
+    "WindowRenderer)",
     "render/rain overlay if the rain overlay is on and output on (reads Params, FrameClock, RenderTarget; "
     "writes Device, "
     "RainOverlay)",

@@ -75,6 +75,11 @@ TEST(Golden, RainyStreetWithRainOverlay) {
     check_golden("street", render_with({"scene.kind=street", "overlay.rain=true"}, 4, scene_golden_size));
 }
 
+// Rain on a window at night: beads, running drops and the city's lights out of focus behind the glass.
+TEST(Golden, RainOnAWindow) {
+    check_golden("window", render_with({"scene.kind=window"}, 4, scene_golden_size));
+}
+
 TEST(Golden, PuddleAnalyticRipples) {
     check_golden("analytic", render_with({"drops.model=analytic"}, 4, scene_golden_size));
 }

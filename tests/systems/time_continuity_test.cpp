@@ -44,6 +44,8 @@ struct Look {
 
 const Look ocean{"ocean", {"scene.kind=ocean"}};
 const Look street{"street", {"scene.kind=street"}};
+// The window's runs over a glass without still beads: only the running drops and the cars move.
+const Look window{"window", {"scene.kind=window", "window.beads=0", "window.streams=32", "rain.rate=20"}};
 // The rain overlay over a sea that stands still (ocean.speed = 0), so only the streaks move. A streak
 // falls a quarter of its cell in two frames, about as far as a jump moves it, so frames a tenth of a
 // frame apart tell a jump from a fall. The grid's thin rings likewise (at a jump every drop moves).
@@ -95,6 +97,9 @@ TEST(TimeContinuity, OceanDoesNotJumpAtTheOldWrap) {
 TEST(TimeContinuity, StreetDoesNotJumpAtTheOldWrap) {
     expect_continuous_at(street, old_wrap);
 }
+TEST(TimeContinuity, WindowDoesNotJumpAtTheOldWrap) {
+    expect_continuous_at(window, old_wrap);
+}
 TEST(TimeContinuity, RainOverlayDoesNotJumpAtTheOldWrap) {
     expect_continuous_at(rain, old_wrap);
 }
@@ -104,6 +109,9 @@ TEST(TimeContinuity, OceanMovesNormallyAfterTenToTheEightSeconds) {
 }
 TEST(TimeContinuity, StreetMovesNormallyAfterTenToTheEightSeconds) {
     expect_moving_normally_at(street, long_uptime);
+}
+TEST(TimeContinuity, WindowMovesNormallyAfterTenToTheEightSeconds) {
+    expect_moving_normally_at(window, long_uptime);
 }
 TEST(TimeContinuity, RainOverlayMovesNormallyAfterTenToTheEightSeconds) {
     expect_moving_normally_at(rain, long_uptime);
