@@ -72,6 +72,21 @@ TEST(WindowScene, BlurGrowsTheLightsIntoDiscs) {
     EXPECT_GT(soft, 2 * sharp) << "out of focus, each light is a larger disc";
 }
 
+// The glass is in focus and the rain beyond it is not: the window takes no sharp streaks (Looks'
+// takes_rain_overlay), whatever overlay.rain says; the street still does.
+TEST(WindowScene, TakesNoRainStreaks) {
+    const auto with = window_at({"overlay.rain=true", "overlay.rain_opacity=1"}, 20.0);
+    const auto without = window_at({"overlay.rain=false"}, 20.0);
+    ASSERT_FALSE(with.empty() || without.empty());
+    EXPECT_EQ(compare_images(with, without, 0).max_channel_diff, 0);
+    auto street = [](const std::string& rain) {
+        params::Params p = make_params({"scene.kind=street", "overlay.rain_opacity=1", "overlay.rain=" + rain});
+        auto engine = make_engine(p, size);
+        return engine ? render_frames(*engine, 20) : assets::Image{};
+    };
+    EXPECT_GT(compare_images(street("true"), street("false"), 0).max_channel_diff, 0) << "the street takes them";
+}
+
 // The bottom row (from the top) where `img` differs from `dry` by more than `threshold`, or -1.
 int lowest_changed_row(const assets::Image& img, const assets::Image& dry, int threshold) {
     for (int y = img.height - 1; y >= 0; --y)
