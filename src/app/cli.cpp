@@ -140,11 +140,12 @@ void describe_command_line(CLI::App& cli, CliOptions& o, std::string& backend, s
         "--fixed-step", o.fixed_step,
         "Advance simulated time by 1/60 s (or 1/fps-cap) per frame on any backend, as headless runs do: "
         "frame N on a screen is then the same picture as a headless render of N frames");
-    cli.add_option("--hold-after", o.hold_after,
-                   "Stop simulated time after N frames: the picture of frame N stays on screen while the display "
-                   "keeps presenting it, config reloads, knobs and remote control still apply and the systemd "
-                   "watchdog is still pinged. With --fixed-step the held picture is a headless render of N "
-                   "frames, so a screen can be checked against one (the VM test does; 0: off)")
+    cli.add_option(
+           "--hold-after", o.hold_after,
+           "Stop simulated time after N frames: the picture of frame N stays on screen while the display "
+           "keeps presenting it, config reloads, knobs and remote control still apply and the systemd "
+           "watchdog is still pinged. With --fixed-step the held picture is a headless render of N "
+           "frames, so a screen can be checked against one (the VM test does; 0: off)")
         ->check(CLI::Range(0L, 1000000000L))
         ->type_name("N");
     cli.add_option(

@@ -26,8 +26,8 @@ double window_stream_period(const params::Params& params, int column) {
         (static_cast<double>(params.get<ParamId::window_view_height>()) + 2.0 * window_run_margin) /
         static_cast<double>(params.get<ParamId::window_slide_speed>());
     const auto seed = static_cast<std::uint32_t>(params.get<ParamId::rain_seed>());
-    const double u =
-        render::shader_unit_float(render::shader_hash3(static_cast<std::uint32_t>(column), stream_salt, seed));
+    const double u = render::shader_unit_float(
+        render::shader_hash3(static_cast<std::uint32_t>(column), stream_salt, seed));
     return run * (1.8 + 1.4 * u) + 1.2 * window_trail_refill;
 }
 
@@ -37,7 +37,8 @@ double window_wetness(double rate_mm_h) {
 
 WindowTime window_time(const params::Params& params, double seconds) {
     WindowTime wt;
-    const render::Repetition life = render::repetition_at(seconds, params.get<ParamId::window_bead_life>(), 0.0);
+    const render::Repetition life =
+        render::repetition_at(seconds, params.get<ParamId::window_bead_life>(), 0.0);
     wt.bead_phase = static_cast<float>(life.age / params.get<ParamId::window_bead_life>());
     if (wt.bead_phase >= 1.0f) wt.bead_phase = 0.0f;  // a float age rounded up to the whole life
     wt.bead_cycle = static_cast<int>(life.index);
@@ -54,8 +55,10 @@ WindowTime window_time(const params::Params& params, double seconds) {
         const render::Repetition r = render::repetition_at(seconds, window_stream_period(params, i), offset);
         // Whether this run goes is decided by the rain when it set off, so a shower's change of rate
         // never makes a drop vanish halfway down.
-        const double wet_then = window_wetness(rain_rate_at(rate, drift, seconds - static_cast<double>(r.age)));
-        const double go = render::shader_unit_float(render::shader_hash3(column, r.index, seed ^ (stream_salt + 2u)));
+        const double wet_then =
+            window_wetness(rain_rate_at(rate, drift, seconds - static_cast<double>(r.age)));
+        const double go =
+            render::shader_unit_float(render::shader_hash3(column, r.index, seed ^ (stream_salt + 2u)));
         const bool runs = go < 0.3 + 0.7 * wet_then;
         wt.stream_age[static_cast<std::size_t>(i)] = runs ? r.age : static_cast<float>(window_resting_age);
         wt.stream_repeat[static_cast<std::size_t>(i)] = static_cast<int>(r.index ^ seed);

@@ -41,8 +41,8 @@ double window_wetness(double rate_mm_h);
 
 // Everything window.frag needs of the time `seconds`.
 struct WindowTime {
-    float bead_phase = 0;  // fraction of window.bead_life, in [0, 1)
-    int bead_cycle = 0;    // whole bead lives since the start (the bits of a uint)
+    float bead_phase = 0;     // fraction of window.bead_life, in [0, 1)
+    int bead_cycle = 0;       // whole bead lives since the start (the bits of a uint)
     float traffic_shift = 0;  // fraction of a lattice cell
     int traffic_cells = 0;    // whole cells (the bits of a uint)
     float wetness = 0;        // window_wetness of the rain rate now (rain_rate_at)

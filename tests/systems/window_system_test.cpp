@@ -1,6 +1,8 @@
 // Rain on a window (systems/window/window_system.hpp, scene.kind = window): the still beads follow the
 // rain, window.blur grows the city's lights into larger discs, and a running drop moves down the glass
 // leaving a trail behind it.
+#include "systems/window/window_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,7 +13,6 @@
 #include "support/gpu_fixture.hpp"
 #include "support/test_support.hpp"
 #include "systems/clock/frame_clock.hpp"
-#include "systems/window/window_system.hpp"
 
 namespace puddle::test {
 namespace {
@@ -80,11 +81,13 @@ TEST(WindowScene, TakesNoRainStreaks) {
     ASSERT_FALSE(with.empty() || without.empty());
     EXPECT_EQ(compare_images(with, without, 0).max_channel_diff, 0);
     auto street = [](const std::string& rain) {
-        params::Params p = make_params({"scene.kind=street", "overlay.rain_opacity=1", "overlay.rain=" + rain});
+        params::Params p =
+            make_params({"scene.kind=street", "overlay.rain_opacity=1", "overlay.rain=" + rain});
         auto engine = make_engine(p, size);
         return engine ? render_frames(*engine, 20) : assets::Image{};
     };
-    EXPECT_GT(compare_images(street("true"), street("false"), 0).max_channel_diff, 0) << "the street takes them";
+    EXPECT_GT(compare_images(street("true"), street("false"), 0).max_channel_diff, 0)
+        << "the street takes them";
 }
 
 // The bottom row (from the top) where `img` differs from `dry` by more than `threshold`, or -1.
@@ -98,8 +101,9 @@ int lowest_changed_row(const assets::Image& img, const assets::Image& dry, int t
 
 TEST(WindowScene, ARunningDropMovesDownAndLeavesATrail) {
     // One column, big drops (6 cm of glass), slow, and rain heavy enough that the run goes.
-    const std::vector<std::string> sets{"window.streams=1", "window.beads=0",      "window.traffic=0",
-                                        "rain.rate=50",     "window.view_height=0.06", "window.slide_speed=0.02"};
+    const std::vector<std::string> sets{"window.streams=1",        "window.beads=0",
+                                        "window.traffic=0",        "rain.rate=50",
+                                        "window.view_height=0.06", "window.slide_speed=0.02"};
     const params::Params p = window_params(sets);
     double t1 = -1.0;
     for (double t = 0.0; t < 600.0 && t1 < 0.0; t += 0.05) {

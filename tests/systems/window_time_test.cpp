@@ -23,7 +23,8 @@ TEST(WindowTime, EveryRunLeavesTheViewAndItsTrailRefillsBeforeTheColumnRunsAgain
                              {"window.view_height=0.05", "window.slide_speed=0.5"},
                              {"window.view_height=1", "window.slide_speed=0.005"}}) {
         const params::Params p = make_params(sets);
-        const double height = p.get<ParamId::window_view_height>(), speed = p.get<ParamId::window_slide_speed>();
+        const double height = p.get<ParamId::window_view_height>(),
+                     speed = p.get<ParamId::window_slide_speed>();
         // The slowest drop runs at 0.6 times the average; it has left when it ran the view and the margin.
         const double slowest_run = (height + 2.0 * systems::window_run_margin) / (0.6 * speed);
         for (int i = 0; i < window_max_streams; ++i) {
