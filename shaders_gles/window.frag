@@ -24,6 +24,7 @@ uniform float u_window_blur;         // 0..1: how far out of focus the city is
 uniform float u_window_lights;       // 0..1: how many of the city's lights are on
 uniform float u_window_traffic;      // 0..1: how many cars pass in the street below
 uniform float u_window_exposure;     // stops
+uniform int u_rain_seed;             // rain.seed: where the beads sit (the runs' seed comes with their repeats)
 
 const int MAX_STREAMS = 32;
 const float BEAD_CELL = 0.005;   // metres: the still beads' grid; a bead's radius is at most half of it
@@ -126,16 +127,17 @@ vec3 light_layer(vec2 q, float cell, float density, uint salt, float sharp) {
     return sum;
 }
 
-// The far lights: smaller discs, each kept within its own cell (radius and offset under half a cell), so
-// one cell is all a pixel looks at: a quarter of light_layer's work for the many small lights.
+// The far lights: smaller discs, each kept within its own cell (radius, soft edge and offset under half a
+// cell), so one cell is all a pixel looks at: a quarter of light_layer's work for the many small lights.
 vec3 far_lights(vec2 q, float cell, float density, uint salt, float sharp) {
     ivec2 c = ivec2(floor(q / cell));
     uint h = cell_hash(c, salt), g = mix_bits(h);
-    vec2 centre = (vec2(c) + 0.5 + (vec2(byte_of(g, 0), byte_of(g, 1)) - 0.5) * 0.3) * cell;
+    // At most 0.2 off the centre, a radius of at most 0.22 x 1.1 and its edge of 0.12 of it: 0.47 of a cell.
+    vec2 centre = (vec2(c) + 0.5 + (vec2(byte_of(g, 0), byte_of(g, 1)) - 0.5) * 0.4) * cell;
     float here = density * smoothstep(0.02, 0.15, centre.y) * smoothstep(0.75, 0.5, centre.y);
     if (unit_float(h) >= here) return vec3(0.0);
     float b = byte_of(g, 2);
-    float r = cell * mix(0.12, 0.3, u_window_blur) * mix(0.7, 1.1, byte_of(g, 3));
+    float r = cell * mix(0.1, 0.22, u_window_blur) * mix(0.7, 1.1, byte_of(g, 3));
     return light_color(byte_of(h, 0)) * (0.12 + 1.2 * b * b) * bokeh(distance(q, centre), r, sharp);
 }
 
@@ -154,7 +156,8 @@ vec3 traffic(vec2 q, float sharp) {
             int c = base + i;
             uint h = cell_hash(ivec2(int(uint(c) - uint(int(dir) * u_traffic_cells)), lane), 71u);
             if (unit_float(h) >= u_window_traffic) continue;
-            vec2 centre = vec2(float(c) + 0.5 + (byte_of(h, 0) - 0.5) * 0.4, y / cell);
+            // Each car a little higher or lower (its lights, its distance) and its own size.
+            vec2 centre = vec2(float(c) + 0.5 + (byte_of(h, 0) - 0.5) * 0.4, (y + (byte_of(h, 2) - 0.5) * 0.03) / cell);
             vec3 col = lane == 0 ? vec3(1.0, 0.1, 0.06) : vec3(1.0, 0.92, 0.8);
             float d = distance(vec2(x, q.y / cell), centre) * cell;
             sum += col * (lane == 0 ? 0.8 : 1.4) * bokeh(d, r * mix(0.75, 1.05, byte_of(h, 1)), sharp);
@@ -201,6 +204,15 @@ float run_distance(float age, float v, float f) {
     return v * (age - 0.7 * sin(w * age) / w);
 }
 
+// Whether a bead centred at c (metres) is still wiped away: its centre lies in the trail (whose middle at
+// nearby heights is trail_x, the wander changing little over a bead) and the drop passed it less than
+// `refill` seconds ago. Tested at the centre, so a bead is there whole or not at all.
+bool trail_wiped(vec2 c, float refill, float trail_x, float trail_half, float run_top, float run_s, float run_age) {
+    float along = run_top - c.y;
+    if (along <= 0.0 || along >= run_s || abs(c.x - trail_x) >= trail_half) return false;
+    return run_age * (1.0 - along / run_s) < refill;
+}
+
 void main() {
     vec2 uv = v_uv;
     vec2 q = vec2((uv.x - 0.5) * u_aspect, uv.y);                         // view heights
@@ -210,8 +222,10 @@ void main() {
 
     // The runs: stream i's column, its drop and the trail above it.
     Lens lens = Lens(vec2(0.0), vec2(0.0), 0.0);
-    float trail_age = 1e6;  // seconds since a drop passed here, if one did
     float trail_edge = 0.0;
+    // The pixel's column's trail, for the beads to ask whether their centre lies in it (trail_wiped): its
+    // middle at this height, half-width, the top of the run, the distance run and the age of the run.
+    float trail_x = 0.0, trail_half = 0.0, run_top = 0.0, run_s = 0.0, run_age = 0.0;
     int streams = min(u_window_streams, MAX_STREAMS);
     if (streams > 0) {
         // A drop and its trail stay inside their column: in a column narrower than twice their reach
@@ -234,15 +248,18 @@ void main() {
             if (dot(o, o) < 1.0 && lens.cover < 1.0) lens = Lens(o, drop, 1.0);
             // The trail: the path above the drop, a little narrower than it.
             float along = top + radius - g.y;  // metres of run to this height
+            trail_x = x0 + wander(max(along, 0.0), h) * fit;
+            trail_half = 0.55 * radius;
+            run_top = top + radius;
+            run_s = s;
+            run_age = age;
             if (along > 0.0 && along < s) {
-                float across = abs(g.x - x0 - wander(along, h) * fit);
-                float width = 0.55 * radius;
-                if (across < width) {
+                float across = abs(g.x - trail_x);
+                if (across < trail_half) {
                     float passed = age * (1.0 - along / s);
-                    trail_age = min(trail_age, passed);
                     // Its wet edges dry as beads refill it.
-                    trail_edge = max(trail_edge, smoothstep(0.6 * width, width, across) *
-                                                     (1.0 - smoothstep(0.3, 1.0, passed / TRAIL_REFILL)));
+                    trail_edge = smoothstep(0.6 * trail_half, trail_half, across) *
+                                 (1.0 - smoothstep(0.3, 1.0, passed / TRAIL_REFILL));
                 }
                 // Now and then the trail leaves a tiny bead behind, which the refill takes in again.
                 float step_m = 0.0045;
@@ -263,6 +280,7 @@ void main() {
     // The still beads, renewed each bead life: a new place and size per cell and life, the cells' lives
     // staggered. A bead in a trail a drop wiped less than TRAIL_REFILL seconds ago is not there yet.
     float coverage = u_window_beads * u_wetness;
+    uint seed = uint(u_rain_seed) * 0x9e3779b9u;  // rain.seed chooses where the beads sit
     if (lens.cover < 1.0) {
         // A bead reaches at most 0.45 + 0.46 of a cell from its cell's centre: the 2x2 nearest cells.
         vec2 p = g / BEAD_CELL;
@@ -270,10 +288,10 @@ void main() {
         for (int j = 0; j <= 1; ++j) {
             for (int i = 0; i <= 1; ++i) {
                 ivec2 c = base + ivec2(i, j);
-                float phase = u_bead_phase + unit_float(cell_hash(c, 503u));
+                float phase = u_bead_phase + unit_float(cell_hash(c, 503u ^ seed));
                 uint life = uint(u_bead_cycle) + (phase >= 1.0 ? 1u : 0u);
                 float a = fract(phase);
-                uint h = cell_hash(c, life * 2654435761u + 17u), k = mix_bits(h);
+                uint h = cell_hash(c, (life * 2654435761u + 17u) ^ seed), k = mix_bits(h);
                 if (unit_float(h) >= coverage) continue;
                 float size = byte_of(k, 0);
                 float radius = BEAD_CELL * mix(0.12, 0.46, size * size);  // many small, a few large
@@ -281,7 +299,8 @@ void main() {
                 vec2 centre = (vec2(c) + 0.5 + (vec2(byte_of(k, 1), byte_of(k, 2)) - 0.5) * 0.9) * BEAD_CELL;
                 vec2 o = (g - centre) / max(radius, 1e-6);
                 if (dot(o, o) >= 1.0) continue;
-                if (trail_age < TRAIL_REFILL * byte_of(k, 3)) continue;
+                if (trail_wiped(centre, TRAIL_REFILL * byte_of(k, 3), trail_x, trail_half, run_top, run_s, run_age))
+                    continue;
                 lens = Lens(o, centre, 1.0);
             }
         }
@@ -289,16 +308,22 @@ void main() {
     // The fine beads between them: one cell each, smaller than its cell, so no neighbour reaches here.
     float mist = 0.0;
     if (lens.cover < 1.0) {
+        // Their lives staggered like the beads', so they renew a few at a time, never all at once.
         vec2 p = g / MIST_CELL;
         ivec2 c = ivec2(floor(p));
-        uint h = cell_hash(c, uint(u_bead_cycle) * 7u + 601u), k = mix_bits(h);
-        if (unit_float(h) < coverage * 0.5 && trail_age >= TRAIL_REFILL * byte_of(k, 3)) {
+        float phase = u_bead_phase + unit_float(cell_hash(c, 607u ^ seed));
+        uint life = uint(u_bead_cycle) + (phase >= 1.0 ? 1u : 0u);
+        float a = fract(phase);
+        uint h = cell_hash(c, (life * 7u + 601u) ^ seed), k = mix_bits(h);
+        if (unit_float(h) < coverage * 0.5) {
             // Anywhere in its cell that it fits, so the fine beads show no grid.
             float radius = mix(0.08, 0.2, byte_of(k, 0));  // cells
             vec2 u = vec2(byte_of(k, 1), byte_of(k, 2));
             vec2 centre = (vec2(c) + radius + u * (1.0 - 2.0 * radius)) * MIST_CELL;
-            vec2 o = (g - centre) / (radius * MIST_CELL);
-            mist = max(0.0, 1.0 - dot(o, o));
+            radius *= smoothstep(0.0, 0.015, a) * (1.0 - smoothstep(0.93, 1.0, a));
+            vec2 o = (g - centre) / max(radius * MIST_CELL, 1e-6);
+            if (!trail_wiped(centre, TRAIL_REFILL * byte_of(k, 3), trail_x, trail_half, run_top, run_s, run_age))
+                mist = max(0.0, 1.0 - dot(o, o));
         }
     }
 
@@ -314,7 +339,7 @@ void main() {
         // A little brighter, as it gathers light from that wider field. Toward the rim the surface is
         // steep: it reflects the dark room (total internal reflection), with a crescent of the city's
         // glow focused at the bottom edge and the room's light, faint, off its upper side.
-        color *= 1.15 * mix(1.0, 0.2, smoothstep(0.72, 1.0, r2));
+        color *= 1.3 * mix(1.0, 0.25, smoothstep(0.78, 1.0, r2));
         float crescent = smoothstep(0.55, 0.9, r2) * smoothstep(0.3, 0.9, -lens.o.y) * (1.0 - smoothstep(0.93, 1.0, r2));
         color += vec3(0.22, 0.13, 0.08) * crescent;
         vec2 glint = lens.o - vec2(-0.3, 0.45);

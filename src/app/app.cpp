@@ -169,9 +169,18 @@ Result<void> frame_loop(DisplayRun& run, const CliOptions& o) {
         }
         // Headless runs advance a fixed step per frame, so the same command line gives the same image.
         const auto now = clock::now();
-        const bool held = o.hold_after > 0 && n >= o.hold_after;
-        if (held && n == o.hold_after)
-            spdlog::info("hold: the picture of frame {} stays on screen from now on (--hold-after)", n);
+        // Under wall.clock = "realtime" the wall's clock sets the step whatever a frame's time is.
+        const bool realtime = e.world().resource<params::Params>().get<params::ParamId::wall_clock>() ==
+                              params::WallClockMode::realtime;
+        const bool held = o.hold_after > 0 && n >= o.hold_after && !realtime;
+        if (o.hold_after > 0 && n == o.hold_after) {
+            if (held)
+                spdlog::info("hold: the picture of frame {} stays on screen from now on (--hold-after)", n);
+            else
+                spdlog::warn(
+                    "hold: --hold-after is ignored with wall.clock = \"realtime\": the wall's clock "
+                    "sets the step");
+        }
         const double dt = held                           ? 0.0
                           : run.headless || o.fixed_step ? fixed_dt
                                                          : std::chrono::duration<double>(now - last).count();

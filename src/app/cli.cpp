@@ -145,7 +145,8 @@ void describe_command_line(CLI::App& cli, CliOptions& o, std::string& backend, s
            "Stop simulated time after N frames: the picture of frame N stays on screen while the display "
            "keeps presenting it, config reloads, knobs and remote control still apply and the systemd "
            "watchdog is still pinged. With --fixed-step the held picture is a headless render of N "
-           "frames, so a screen can be checked against one (the VM test does; 0: off)")
+           "frames, so a screen can be checked against one (the VM test does). 0: off. Ignored with "
+           "wall.clock = \"realtime\", where the wall's clock sets the step")
         ->check(CLI::Range(0L, 1000000000L))
         ->type_name("N");
     cli.add_option(

@@ -59,7 +59,7 @@ WindowTime window_time(const params::Params& params, double seconds) {
             window_wetness(rain_rate_at(rate, drift, seconds - static_cast<double>(r.age)));
         const double go =
             render::shader_unit_float(render::shader_hash3(column, r.index, seed ^ (stream_salt + 2u)));
-        const bool runs = go < 0.3 + 0.7 * wet_then;
+        const bool runs = go < std::sqrt(wet_then);  // none on a dry window, about a third in drizzle
         wt.stream_age[static_cast<std::size_t>(i)] = runs ? r.age : static_cast<float>(window_resting_age);
         wt.stream_repeat[static_cast<std::size_t>(i)] = static_cast<int>(r.index ^ seed);
     }

@@ -67,6 +67,13 @@ TEST(EndToEnd, HoldAfterKeepsThePictureOfFrameN) {
     EXPECT_EQ(compare_images(*ih, *i5, 0).max_channel_diff, 0) << "frame 12 of the held run is frame 5";
     EXPECT_GT(compare_images(*im, *i5, 0).max_channel_diff, 0) << "without the hold, frame 12 differs";
     EXPECT_NE(h.output.find("hold: the picture of frame 5 stays on screen"), std::string::npos) << h.output;
+    // Under the wall's real-time clock a frame's time sets no step: the hold says it does nothing.
+    const CommandResult wall = run_puddle(run + "--set wall.clock=realtime --frames 4 --hold-after 2");
+    EXPECT_EQ(wall.exit_code, 0) << wall.output;
+    EXPECT_NE(wall.output.find("hold: --hold-after is ignored with wall.clock = \"realtime\""),
+              std::string::npos)
+        << wall.output;
+    EXPECT_EQ(wall.output.find("stays on screen"), std::string::npos) << wall.output;
 }
 
 TEST(EndToEnd, BadConfigExitsTwoNamingFileLineAndRange) {
