@@ -60,6 +60,19 @@ TEST(WindowScene, TheStillBeadsFollowTheRain) {
     EXPECT_GT(heavy, 3.0 * light);
 }
 
+// rain.seed chooses where the beads sit; the city behind the glass stays the same.
+TEST(WindowScene, TheSeedChoosesWhereTheBeadsSit) {
+    const std::vector<std::string> still{"window.streams=0", "window.traffic=0"};
+    auto with = [&](const std::string& seed, const std::string& beads) {
+        std::vector<std::string> sets = still;
+        sets.push_back("rain.seed=" + seed);
+        sets.push_back("window.beads=" + beads);
+        return window_at(sets, 30.0);
+    };
+    EXPECT_GT(compare_images(with("3", "0.6"), with("12345", "0.6"), 6).fraction_over, 0.02);
+    EXPECT_EQ(compare_images(with("3", "0"), with("12345", "0"), 0).max_channel_diff, 0) << "the same city";
+}
+
 TEST(WindowScene, BlurGrowsTheLightsIntoDiscs) {
     const std::vector<std::string> clear{"window.beads=0", "window.streams=0", "window.traffic=0"};
     auto with = [&](const std::string& blur) {

@@ -53,6 +53,7 @@ TEST(WindowTime, LighterRainRunsFewerDrops) {
     const int drizzle = runs_in_an_hour("0.3"), downpour = runs_in_an_hour("20");
     std::printf("runs in an hour: %d in drizzle (0.3 mm/h), %d in a downpour (20 mm/h)\n", drizzle, downpour);
     EXPECT_GT(drizzle, 0) << "some drops run in drizzle too";
+    EXPECT_EQ(runs_in_an_hour("0"), 0) << "none on a dry window";
     EXPECT_GT(downpour, 2 * drizzle);
     EXPECT_GT(systems::window_wetness(20.0), 0.99);
     EXPECT_LT(systems::window_wetness(0.3), 0.15);
