@@ -110,7 +110,12 @@ struct OtherShader {
     std::vector<std::string> defines;
 };
 const std::vector<OtherShader>& other_shaders() {
-    static const std::vector<OtherShader> all{{"ocean secant", "ocean.frag", {"OCEAN_SECANT"}},
+    // The ocean's default is three passes: the heights and slopes at a quarter of the pixels (the map is
+    // half the target's size per side), then the search that reads them.
+    static const std::vector<OtherShader> all{{"ocean height map", "ocean.frag", {"OCEAN_HEIGHT_MAP"}},
+                                              {"ocean heights", "ocean_height.frag", {}},
+                                              {"ocean slopes", "ocean_slope.frag", {}},
+                                              {"ocean secant", "ocean.frag", {"OCEAN_SECANT"}},
                                               {"ocean reference", "ocean.frag", {}},
                                               {"street", "street.frag", {}},
                                               {"window", "window.frag", {}},
@@ -135,6 +140,10 @@ Figures figures(const Collector& c) {
                    in = c.ms("render/intersect/" + size_name(s));
         if (rm && in) f[fmt::format("render/intersect/{} x raymarch", size_name(s))] = *in / *rm;
     }
+    if (const auto pulse = c.ms("look/puddle_pulse"))
+        for (const std::string& name : c.names())
+            if (name.starts_with("look/") && name != "look/puddle_pulse")
+                if (const auto ms = c.ms(name)) f[name + " x puddle_pulse"] = *ms / *pulse;
     for (params::RenderMethod m : methods) {
         const bench::ShaderCost cost = shader_cost(m);
         f[fmt::format("shader/{} texture fetches", params::choice_name(m))] = cost.texture_fetches;

@@ -31,6 +31,12 @@ public:
     }
     void Finalize() override { display_->Finalize(); }
     bool empty() const { return sums_.empty(); }
+    // Every benchmark measured, by registered name, in name order.
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (const auto& [name, sum] : sums_) out.push_back(name);
+        return out;
+    }
     std::optional<double> ms(const std::string& name) const {
         auto it = sums_.find(name);
         if (it == sums_.end()) return std::nullopt;
@@ -46,7 +52,8 @@ private:
 std::string cell(std::optional<double> ms, std::optional<double> base);
 // The tables of passes, looks and camera frames, with the GL renderer, CPU and load average.
 void print_summary(const Collector& c);
-// The ratios and shader costs the baseline keeps.
+// The ratios and shader costs the baseline keeps: each pass x the floor, each look x the default
+// ("look/ocean x puddle_pulse", every look and drop model the run measured), the shader costs.
 Figures figures(const Collector& c);
 // Prints the shader cost, then each figure beside its baseline; true when a shader cost regressed.
 bool print_against_baseline(const Figures& now, const Figures& baseline, const std::string& path);

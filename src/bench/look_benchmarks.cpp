@@ -39,6 +39,7 @@ const std::vector<Look>& looks() {
         {"puddle_analytic_100", {"drops.model=analytic", "analytic.sources=100"}},
         {"puddle_analytic_500", {"drops.model=analytic", "analytic.sources=500"}},
         {"ocean", {"scene.kind=ocean"}},
+        {"ocean_secant", {"scene.kind=ocean", "ocean.method=secant"}},
         {"ocean_reference", {"scene.kind=ocean", "ocean.method=reference"}},
         {"street", {"scene.kind=street"}},
         {"street_rain", {"scene.kind=street", "overlay.rain=true"}},

@@ -1,6 +1,8 @@
 #pragma once
-// The open-water scene (REFERENCE.md section 2), drawn when scene.kind = ocean: one fullscreen pass
-// that marches the choppy fBm height field (ocean.frag). Needs no simulation: the sea is a function of time.
+// The open-water scene (REFERENCE.md section 2), drawn when scene.kind = ocean: a fullscreen pass that
+// finds the choppy fBm height field along each view ray (ocean.frag), after, under ocean.method =
+// height_map (the default), a pass that lays the height into this frame's map (ocean_height_map.hpp).
+// Needs no simulation: the sea is a function of time.
 //
 // Time reaches the shader only as offsets computed here in double (render/shader_phase.hpp). Octave i
 // (frequency f = 0.16 * 2^i cells per unit) has two terms travelling at t = ocean.speed * seconds and
@@ -33,11 +35,22 @@ struct OceanTime {
 };
 OceanTime ocean_time(double seconds, double speed);
 
-// Resource: a pass per ocean.method. `pass` (secant, the default) is the one the look prepares; the
-// reference's is built when first asked for, and until it is ready the secant one is drawn.
+// Resource: the passes of each ocean.method. Start-up builds the height map's two (where the GPU renders
+// half floats) and the secant search, the map's fallback: for an eye lower than the crests
+// (ocean_height_map_min_eye), a GPU without half-float targets (EXT_color_buffer_half_float), or a map
+// texture the driver refused. The reference's march is built when first asked for, and until it is ready
+// the default is drawn.
 struct OceanRenderer {
-    FullscreenPass pass;
-    FullscreenPass reference;
+    FullscreenPass height;     // ocean_height.frag: the heights
+    FullscreenPass slope;      // ocean_slope.frag: the map, with the slopes beside the heights
+    FullscreenPass mapped;     // ocean.frag reading the map (OCEAN_HEIGHT_MAP)
+    FullscreenPass secant;     // ocean.frag, OCEAN_SECANT
+    FullscreenPass reference;  // ocean.frag, the reference's march
+    // RGBA16F, remade when the layout's size changes: the heights (red), then the map (height, dh/dx, dh/dz).
+    gpu::Texture heights, map;
+    gpu::Sampler nearest;      // how the slope pass reads the heights
+    gpu::Sampler map_sampler;  // bilinear, clamped: how ocean.frag reads the map
+    bool map_refused = false;  // the driver refused the map's texture once: secant from then on
     OceanRenderer();
 };
 

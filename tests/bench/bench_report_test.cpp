@@ -105,11 +105,28 @@ TEST(BenchReport, FiguresAreRatiosOfTheRunsThereAreAndTheShaderCosts) {
     EXPECT_GT(f.at("shader/raymarch texture fetches"), f.at("shader/intersect texture fetches"));
     Collector none(&display);
     const Figures costs_only = figures(none);
-    EXPECT_EQ(costs_only.size(), 4u + 2u * 5u)
-        << "the puddle's two methods and the other looks' five shaders";
-    for (const char* look : {"ocean secant", "ocean reference", "street", "window", "rain streaks"})
+    EXPECT_EQ(costs_only.size(), 4u + 2u * 8u)
+        << "the puddle's two methods and the other looks' eight shaders";
+    for (const char* look : {"ocean height map", "ocean heights", "ocean slopes", "ocean secant",
+                             "ocean reference", "street", "window", "rain streaks"})
         EXPECT_GT(costs_only.at(fmt::format("shader/{} alu ops", look)), 0.0) << look;
     EXPECT_EQ(costs_only.at("shader/raymarch alu ops"), f.at("shader/raymarch alu ops"));
+}
+
+// Every look and drop model the run measured, as a ratio to the default look in the same run; none
+// without the default's row.
+TEST(BenchReport, EachLookIsARatioToTheDefaultInTheSameRun) {
+    RecordingReporter display;
+    Collector c(&display);
+    c.ReportRuns(
+        {run("look/puddle_pulse", 100.0), run("look/ocean", 180.0), run("look/puddle_grid_10", 50.0)});
+    const Figures f = figures(c);
+    EXPECT_DOUBLE_EQ(f.at("look/ocean x puddle_pulse"), 1.8);
+    EXPECT_DOUBLE_EQ(f.at("look/puddle_grid_10 x puddle_pulse"), 0.5);
+    EXPECT_EQ(f.count("look/puddle_pulse x puddle_pulse"), 0u);
+    Collector without_default(&display);
+    without_default.ReportRuns({run("look/ocean", 180.0)});
+    EXPECT_EQ(figures(without_default).count("look/ocean x puddle_pulse"), 0u);
 }
 
 TEST(BenchReport, AgainstTheBaselineARiseInAShaderCostIsARegression) {

@@ -70,8 +70,9 @@ TEST(LookSwitch, ALookThatFailsToBuildIsNeverShown) {
     ASSERT_TRUE(context.ok()) << context.error().message;
     engine->device().start_background_compiles(std::move(context).value());
     // As if ocean.frag had not compiled on this GPU: the pipeline is marked failed.
-    engine->world().resource<systems::OceanRenderer>().pass.cache.fail(
-        {}, {"test: ocean.frag does not compile here"});
+    auto& ocean = engine->world().resource<systems::OceanRenderer>();
+    for (systems::FullscreenPass* pass : {&ocean.mapped, &ocean.secant})
+        pass->cache.fail({}, {"test: ocean.frag does not compile here"});
     const auto before = render_frames(*engine, 3);
     set(*engine, "scene.kind=ocean");
     const auto after = render_frames(*engine, 10);

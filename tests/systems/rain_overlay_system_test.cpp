@@ -36,8 +36,8 @@ TEST(RainOverlay, OffOrTransparentChangesNothing) {
 }
 
 TEST(RainOverlay, StreaksTakeTheRainColour) {
-    const auto plain = render_with({"scene.kind=ocean", "overlay.rain=false"}, 2);
-    const auto red = render_with({"scene.kind=ocean", "overlay.rain=true", "overlay.rain_color=1,0,0",
+    const auto plain = render_with({"scene.kind=street", "overlay.rain=false"}, 2);
+    const auto red = render_with({"scene.kind=street", "overlay.rain=true", "overlay.rain_color=1,0,0",
                                   "overlay.rain_opacity=1", "overlay.rain_density=2"},
                                  2);
     int redder = 0, bluer = 0;

@@ -46,10 +46,14 @@ const Look ocean{"ocean", {"scene.kind=ocean"}};
 const Look street{"street", {"scene.kind=street"}};
 // The window's runs over a glass without still beads: only the running drops and the cars move.
 const Look window{"window", {"scene.kind=window", "window.beads=0", "window.streams=32", "rain.rate=20"}};
-// The rain overlay over a sea that stands still (ocean.speed = 0), so only the streaks move. A streak
+// The rain overlay over a street that stands still (its clouds, ground, lightning, ripples and splashes
+// off), so only the streaks move. A streak
 // falls a quarter of its cell in two frames, about as far as a jump moves it, so frames a tenth of a
 // frame apart tell a jump from a fall. The grid's thin rings likewise (at a jump every drop moves).
-const Look rain{"rain overlay", {"scene.kind=ocean", "ocean.speed=0", "overlay.rain=true"}, frame / 10};
+const Look rain{"rain overlay",
+                {"scene.kind=street", "street.cloud_drift=0", "street.ground_drift=0", "street.lightning=0",
+                 "street.ripples=0", "street.splashes=0", "overlay.rain=true"},
+                frame / 10};
 const Look grid{
     "grid drops", {"drops.model=grid", "grid.cycle=0.1", "grid.drops_per_second=2000"}, frame / 10};
 
