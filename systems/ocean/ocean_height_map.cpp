@@ -14,7 +14,9 @@ float ocean_highest_wave(float height, int octaves) {
     return sum;
 }
 
-float ocean_height_map_min_eye(float highest_wave) { return 1.25f * highest_wave + 0.05f; }
+float ocean_height_map_min_eye(float highest_wave) {
+    return 1.25f * highest_wave + 0.05f;
+}
 
 namespace {
 
@@ -29,7 +31,8 @@ std::optional<glm::vec2> view_uv_of(const render::ViewBasis& view, glm::vec3 eye
     const glm::vec3 d = q - eye;
     const float z = glm::dot(d, view.forward);
     if (z <= 1e-4f) return std::nullopt;
-    const glm::vec2 ndc{glm::dot(d, view.right) / (z * view.scale.x), glm::dot(d, view.up) / (z * view.scale.y)};
+    const glm::vec2 ndc{glm::dot(d, view.right) / (z * view.scale.x),
+                        glm::dot(d, view.up) / (z * view.scale.y)};
     return ndc * 0.5f + 0.5f;
 }
 
@@ -39,7 +42,8 @@ OceanHeightMapLayout ocean_height_map_layout(const render::ViewBasis& view, glm:
                                              const render::ViewWindow& window, glm::ivec2 target_size) {
     OceanHeightMapLayout layout;
     layout.plane = highest_wave;
-    if (eye.y < ocean_height_map_min_eye(highest_wave) || target_size.x <= 0 || target_size.y <= 0) return layout;
+    if (eye.y < ocean_height_map_min_eye(highest_wave) || target_size.x <= 0 || target_size.y <= 0)
+        return layout;
     constexpr int samples = 17;
     const glm::vec2 spacing = window.extent / float(samples - 1);
     glm::vec2 low{0}, high{0};

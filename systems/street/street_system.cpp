@@ -31,7 +31,17 @@ void set_sources(const StreetSourceKind& kind, std::uint32_t seed, double second
 }
 }  // namespace
 
-StreetTime street_time(const params::Params& params, double seconds) {
+glm::vec2 street_source_spot(const StreetSourceKind& kind, int i, int repeat, float horizon_f,
+                             float aspect_f) {
+    const double horizon = horizon_f, aspect = aspect_f;
+    const auto id = static_cast<std::uint32_t>(i), at = static_cast<std::uint32_t>(repeat);
+    const double x = render::shader_unit_float(render::shader_hash3(id, at, kind.salt + 2u));
+    const double y = render::shader_unit_float(render::shader_hash3(id, at, kind.salt + 3u)) * horizon * 0.9;
+    const double depth = std::max((horizon - y) / horizon, 1e-3);
+    return {static_cast<float>((x - 0.5) * aspect / depth * 0.3), static_cast<float>(0.3 / depth)};
+}
+
+StreetTime street_time(const params::Params& params, double seconds, float aspect) {
     constexpr double two_pi = 2.0 * std::numbers::pi;
     StreetTime st;
     // sin(1.7 t + 3) * sin(2.3 t): the constant 3 rides in the phase, reduced with it.
@@ -55,10 +65,47 @@ StreetTime street_time(const params::Params& params, double seconds) {
         st.ground_shift[i] = shift.fraction;
         st.ground_cells[static_cast<std::size_t>(i)] = shift.cells;
     }
+    // The facades and lamps drift with the ground (street.ground_drift units a second), in whole units.
+    const render::LatticeShift street = render::lattice_shift(seconds, drift);
+    st.street_shift = street.fraction;
+    st.street_cells = street.cells;
+    const int lamps = params.get<ParamId::street_lamps>();
+    for (int i = 0; i < street_max_lamps; ++i)
+        st.lamps[static_cast<std::size_t>(i)] = street_lamp(i, lamps, street.fraction);
     const auto seed = static_cast<std::uint32_t>(params.get<ParamId::rain_seed>());
     set_sources(street_ripple_kind, seed, seconds, st.ripple_age, st.ripple_repeat);
     set_sources(street_splash_kind, seed, seconds, st.splash_age, st.splash_repeat);
+    // What the shader draws of each: two rings growing at street.ripple_speed, fading in over 0.3 s and
+    // out as exp(-1.5 age); a splash's ring at street.splash_speed, fading as exp(-4 age).
+    const float horizon = params.get<ParamId::street_horizon>();
+    const double ripple_speed = params.get<ParamId::street_ripple_speed>();
+    const double splash_speed = params.get<ParamId::street_splash_speed>();
+    for (std::size_t i = 0; i < street_max_sources; ++i) {
+        const double age = st.ripple_age[i];
+        const double fade_in = std::clamp(age / 0.3, 0.0, 1.0);
+        const glm::vec2 spot =
+            street_source_spot(street_ripple_kind, static_cast<int>(i), st.ripple_repeat[i], horizon, aspect);
+        st.ripples[i] = {spot, static_cast<float>(ripple_speed * age),
+                         static_cast<float>(std::exp(-1.5 * age) * fade_in * fade_in * (3 - 2 * fade_in))};
+        const glm::vec2 splash =
+            street_source_spot(street_splash_kind, static_cast<int>(i), st.splash_repeat[i], horizon, aspect);
+        const double splash_age = st.splash_age[i];
+        st.splashes[i] = {splash, static_cast<float>(splash_speed * splash_age),
+                          static_cast<float>(std::exp(-4.0 * splash_age))};
+    }
     return st;
+}
+
+glm::vec4 street_lamp(int i, int count, double shift) {
+    const double z = i + 1 - shift;
+    auto smoothstep = [](double a, double b, double x) {
+        const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
+        return t * t * (3 - 2 * t);
+    };
+    const double shown = smoothstep(0.15, 0.45, z) * (1 - smoothstep(count - 1.5, count, z));
+    const double size = 0.006 / z;
+    return {static_cast<float>(z), static_cast<float>(1 / z), static_cast<float>(size * size),
+            static_cast<float>(shown)};
 }
 
 StreetRenderer::StreetRenderer() : pass(street_desc()) {}
@@ -66,17 +113,19 @@ StreetRenderer::StreetRenderer() : pass(street_desc()) {}
 void street_system(gpu::Device& device, const params::Params& params, const FrameClock& clock,
                    StreetRenderer& street, const RenderTarget& target) {
     street.pass.draw(device, params, target, gpu::LoadOp::DontCare, [&](gpu::RenderPass& pass) {
-        const StreetTime st = street_time(params, clock.sim_time);
-        pass.set("u_aspect", target.view.view_aspect(target.target.size))
+        const float aspect = target.view.view_aspect(target.target.size);
+        const StreetTime st = street_time(params, clock.sim_time, aspect);
+        pass.set("u_aspect", aspect)
             .set("u_lightning_phase", st.lightning_phase)
             .set("u_cloud_shift", std::span<const float>(st.cloud_shift))
             .set("u_cloud_cells", std::span<const int>(st.cloud_cells))
             .set("u_noise_shift", st.ground_shift)
             .set("u_noise_cells", std::span<const int>(st.ground_cells))
-            .set("u_ripple_age", std::span<const float>(st.ripple_age))
-            .set("u_ripple_repeat", std::span<const int>(st.ripple_repeat))
-            .set("u_splash_age", std::span<const float>(st.splash_age))
-            .set("u_splash_repeat", std::span<const int>(st.splash_repeat));
+            .set("u_drift_shift", st.street_shift)
+            .set("u_drift_cells", st.street_cells)
+            .set("u_lamp", std::span<const glm::vec4>(st.lamps))
+            .set("u_ripple", std::span<const glm::vec4>(st.ripples))
+            .set("u_splash", std::span<const glm::vec4>(st.splashes));
     });
 }
 

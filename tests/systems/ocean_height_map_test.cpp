@@ -1,12 +1,13 @@
 // Where the ocean's height map lies (systems/ocean/ocean_height_map.hpp): it covers every point of the plane
 // of the highest crest that a ray of the target reads between entering the waves and reaching the floor,
 // at half the target's pixels per side, and there is none where the eye is too low for it.
+#include "systems/ocean/ocean_height_map.hpp"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
 #include "render/view_basis.hpp"
-#include "systems/ocean/ocean_height_map.hpp"
 
 namespace puddle::test {
 namespace {
@@ -17,13 +18,16 @@ constexpr glm::vec3 eye{0, 4, 5};
 constexpr glm::ivec2 target{320, 180};
 const float highest = systems::ocean_highest_wave(0.6f, 5);
 
-render::ViewBasis view_of(glm::vec3 from, glm::vec3 at) { return render::view_basis(from, at, 60, 16.0f / 9); }
+render::ViewBasis view_of(glm::vec3 from, glm::vec3 at) {
+    return render::view_basis(from, at, 60, 16.0f / 9);
+}
 
 // Where the eye sees q, in the view's uv.
 glm::vec2 seen_at(const render::ViewBasis& v, glm::vec3 from, glm::vec3 q) {
     const glm::vec3 d = q - from;
     const float z = glm::dot(d, v.forward);
-    return glm::vec2(glm::dot(d, v.right) / (z * v.scale.x), glm::dot(d, v.up) / (z * v.scale.y)) * 0.5f + 0.5f;
+    return glm::vec2(glm::dot(d, v.right) / (z * v.scale.x), glm::dot(d, v.up) / (z * v.scale.y)) * 0.5f +
+           0.5f;
 }
 
 bool covers(const OceanHeightMapLayout& m, glm::vec2 uv) {
@@ -85,10 +89,13 @@ TEST(OceanHeightMap, ATilesMapIsTheWholeViewsAsFine) {
 
 TEST(OceanHeightMap, NoneForAnEyeAmongTheCrestsOrAViewOfSkyAlone) {
     const glm::vec3 low{0, systems::ocean_height_map_min_eye(highest) - 0.01f, 5};
-    EXPECT_TRUE(systems::ocean_height_map_layout(view_of(low, {0, 0, -10}), low, highest, {}, target).empty());
+    EXPECT_TRUE(
+        systems::ocean_height_map_layout(view_of(low, {0, 0, -10}), low, highest, {}, target).empty());
     const glm::vec3 just{0, systems::ocean_height_map_min_eye(highest) + 0.01f, 5};
-    EXPECT_FALSE(systems::ocean_height_map_layout(view_of(just, {0, 0, -10}), just, highest, {}, target).empty());
-    EXPECT_TRUE(systems::ocean_height_map_layout(view_of(eye, {0, 40, -10}), eye, highest, {}, target).empty())
+    EXPECT_FALSE(
+        systems::ocean_height_map_layout(view_of(just, {0, 0, -10}), just, highest, {}, target).empty());
+    EXPECT_TRUE(
+        systems::ocean_height_map_layout(view_of(eye, {0, 40, -10}), eye, highest, {}, target).empty())
         << "looking up at the sky";
 }
 
