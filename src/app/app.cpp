@@ -77,7 +77,10 @@ void log_stats(const systems::FrameStats::Summary& s, const systems::AdaptiveSca
         "stats: {:.1f} fps over {} frames; frame ms p50 {:.2f} p95 {:.2f} p99 {:.2f} max {:.2f}; "
         "CPU ms/frame {:.2f} (frame loop thread {:.2f}); resident {:.1f} MB; render scale {:.2f}{}",
         s.fps, s.frames, s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms, s.cpu_ms, s.main_cpu_ms, m.rss_kib / 1024.0,
-        adaptive.scale, adaptive.controller ? " (adaptive)" : "");
+        adaptive.scale,
+        !adaptive.controller      ? ""
+        : adaptive.short_at_floor ? " (adaptive; at render.min_scale and still short of render.target_fps)"
+                                  : " (adaptive)");
 }
 
 }  // namespace

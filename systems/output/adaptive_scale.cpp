@@ -1,8 +1,11 @@
 #include "systems/output/adaptive_scale.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace puddle::systems {
 
@@ -54,6 +57,7 @@ void follow_params(gpu::Device& device, const params::Params& params, AdaptiveSc
     a.controller.emplace(wanted);
     a.scale = a.controller->scale();
     a.last_frame_s = -1;
+    a.short_at_floor = a.short_at_floor_said = false;
     spdlog::info("render: adaptive scale on: {:g} fps, scale {:.2f} to {:.2f}, measured by {}", a.target_fps,
                  wanted.min_scale, wanted.max_scale,
                  a.timer.supported() ? "GPU timer queries" : "frame times (no GPU timer queries)");
@@ -71,6 +75,23 @@ void adaptive_scale_system(gpu::Device& device, const params::Params& params, Ad
     a.last_frame_s = now;
     const ScaleUpdate u = a.controller->add_frame(now, frame_s, gpu_s);
     a.scale = u.scale;
+    if (u.window_ended) a.short_at_floor = u.short_at_floor;
+    if (u.short_at_floor && !a.short_at_floor_said) {
+        a.short_at_floor_said = true;
+        const ScaleController& c = *a.controller;
+        const double cost = c.last_cost_s(), budget = 1 / a.target_fps, floor = c.tuning().min_scale;
+        // Cost goes with the pixels shaded, the scale squared (scale_controller.hpp).
+        const double would_hold = floor * std::sqrt(c.tuning().fit * budget / cost);
+        const std::string lower = would_hold >= 0.25
+                                      ? fmt::format("render.min_scale to {:.2f}", would_hold)
+                                      : std::string("render.min_scale cannot go low enough (0.25 at least)");
+        spdlog::warn(
+            "render: even the smallest scale cannot hold {:g} fps: at render.min_scale {:.2f} the p90 {} "
+            "is {:.1f} ms a frame, about {:.0f} fps. Set render.target_fps to {:.0f} (what this GPU "
+            "holds with this look), or lower {}, or choose a lighter look",
+            a.target_fps, floor, source_name(c.last_source()), 1000 * cost, 1 / cost,
+            std::max(1.0, std::floor(c.tuning().fit / cost)), lower);
+    }
     if (u.settled) {
         const ScaleController& c = *a.controller;
         const double scale = static_cast<double>(c.scale());

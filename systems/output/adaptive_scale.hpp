@@ -26,7 +26,11 @@ struct AdaptiveScale {
     std::optional<ScaleController> controller;  // while on
     gpu::GpuTimer timer;                        // made the first time it is on
     bool timer_made = false;
-    double last_frame_s = -1;               // the clock at the previous frame's end; -1: none yet
+    double last_frame_s = -1;  // the clock at the previous frame's end; -1: none yet
+    // The last window ran at render.min_scale and missed the target (the --stats line says so); said
+    // once per controller, with the figures and the settings that would hold it.
+    bool short_at_floor = false;
+    bool short_at_floor_said = false;
     double (*clock)() = monotonic_seconds;  // tests may step their own
 };
 
@@ -37,7 +41,9 @@ double resolved_target_fps(const params::Params& params, double display_refresh_
 void gpu_timer_begin_system(AdaptiveScale& adaptive);
 // Present stage, before the present: ends the GPU timing, feeds this frame to the controller and sets
 // the next frame's scale; (re)starts or stops the controller when the parameters change. One info line
-// when the scale settles: "render: adaptive scale settled at 0.70 (p90 GPU time 14.1 ms; target 60 fps)".
+// when the scale settles: "render: adaptive scale settled at 0.70 (p90 GPU time 14.1 ms; target 60 fps)";
+// one warning, once per setting of the parameters, when even render.min_scale misses the target, with the
+// frame rate this GPU holds there and the render.min_scale that would hold the target.
 void adaptive_scale_system(gpu::Device& device, const params::Params& params, AdaptiveScale& adaptive);
 
 }  // namespace puddle::systems

@@ -57,6 +57,8 @@ void ScaleController::decide(double now_s, ScaleUpdate& update) {
     double next = s;
     const bool was_probe = std::exchange(probing_, false);
     const bool missed = typical > tuning_.typical_miss * budget || cost > tuning_.miss * budget;
+    update.window_ended = true;
+    update.short_at_floor = missed && s <= tuning_.min_scale && !was_probe;
     if (missed && was_probe) {
         next = probe_from_;  // back to where it held
         probe_after_s_ = std::min(2 * probe_after_s_, tuning_.max_probe_after_s);

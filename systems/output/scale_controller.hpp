@@ -44,9 +44,12 @@ struct ScaleTuning {
 enum class CostSource { none, gpu, frame };
 
 struct ScaleUpdate {
-    float scale = 1;       // the scale for the next frame
-    bool changed = false;  // differs from the previous frame's
-    bool settled = false;  // the first window without a change after one or more changes (or at start)
+    float scale = 1;            // the scale for the next frame
+    bool changed = false;       // differs from the previous frame's
+    bool settled = false;       // the first window without a change after one or more changes (or at start)
+    bool window_ended = false;  // a decision window ended with this frame
+    // That window ran at the lowest scale (min_scale) and still missed the target: no scale holds it.
+    bool short_at_floor = false;
 };
 
 class ScaleController {

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "support/gpu_fixture.hpp"
+#include "support/log_lines.hpp"
 #include "support/test_support.hpp"
 #include "systems/output/output_canvas.hpp"
 
@@ -51,6 +52,25 @@ TEST(AdaptiveScale, AMissedTargetDrivesTheScaleBelowOneAndTheCanvasFollows) {
     const assets::Image image = engine->read_frame();
     EXPECT_EQ(image.width, size.x);
     EXPECT_GT(luma_stddev(image, 0, 0, size.x, size.y), 3.0);
+}
+
+// A target no scale meets: once at render.min_scale, one warning (not one a window) with the figure and
+// the settings that would hold it, and the --stats line's marker.
+TEST(AdaptiveScale, WhenEvenTheSmallestScaleMissesItSaysSoOnce) {
+    LogLines warnings(spdlog::level::warn);
+    auto engine = make_engine(make_params({"render.target_fps=240", "render.min_scale=0.5"}), size);
+    ASSERT_TRUE(engine);
+    auto& adaptive = engine->world().resource<systems::AdaptiveScale>();
+    adaptive.timing.hold_s = 0.1;
+    int frame = 0;
+    for (; frame < 600 && !adaptive.short_at_floor; ++frame) ASSERT_TRUE(engine->frame(1.0 / 60).ok());
+    ASSERT_TRUE(adaptive.short_at_floor) << "reached render.min_scale and missed there";
+    EXPECT_EQ(adaptive.scale, 0.5f);
+    for (int more = 0; more < 60; ++more) ASSERT_TRUE(engine->frame(1.0 / 60).ok());  // several windows more
+    EXPECT_EQ(warnings.count("render: even the smallest scale cannot hold 240 fps: at render.min_scale 0.50"),
+              1);
+    EXPECT_EQ(warnings.count("Set render.target_fps to "), 1);
+    EXPECT_EQ(warnings.count("or choose a lighter look"), 1);
 }
 
 TEST(AdaptiveScale, AMetTargetKeepsFullScale) {

@@ -106,6 +106,35 @@ TEST(ScaleController, NeverGoesBelowMinScale) {
     EXPECT_EQ(r.settled, 1);  // settles at the floor, said once
 }
 
+// A load no scale fits: the windows run at the floor miss the target, and say so; the windows on the way
+// down do not (a lower scale was still to try). A load that fits at the floor never says it.
+TEST(ScaleController, AWindowAtTheFloorThatMissesSaysNoScaleHoldsTheTarget) {
+    for (const bool fits : {false, true}) {
+        SCOPED_TRACE(fits);
+        Sim sim{ScaleController(tuning_60())};
+        const Load load =
+            fits ? Load{.fixed_s = 0.002, .per_pixel_s = 0.04} : Load{.fixed_s = 0.002, .per_pixel_s = 0.2};
+        int short_windows = 0, windows = 0;
+        bool short_above_floor = false;
+        for (double now = 0; now < 60;) {
+            const float scale = sim.controller.scale();
+            const double frame = load.at(scale);
+            now += frame;
+            const ScaleUpdate u = sim.controller.add_frame(now, frame, std::nullopt);
+            windows += u.window_ended ? 1 : 0;
+            short_windows += u.short_at_floor ? 1 : 0;
+            if (u.short_at_floor && scale > 0.5f) short_above_floor = true;
+        }
+        EXPECT_GT(windows, 10);
+        EXPECT_FALSE(short_above_floor);
+        if (fits)
+            EXPECT_EQ(short_windows, 0) << "0.04 s at full scale is 0.01 s at 0.5: it holds 60 fps";
+        else
+            EXPECT_GT(short_windows, 5)
+                << "200 ms at full scale, 52 ms at 0.5: every window at the floor is short";
+    }
+}
+
 TEST(ScaleController, StepsAreSmall) {
     Sim sim{ScaleController(tuning_60())};
     float previous = sim.controller.scale();

@@ -39,7 +39,8 @@ TEST(StreetTime, ASourceFallsOnTheGroundInView) {
     constexpr float horizon = 0.42f, aspect = 16.0f / 9;
     for (int i = 0; i < 32; ++i)
         for (int repeat = 0; repeat < 5; ++repeat) {
-            const glm::vec2 g = systems::street_source_spot(systems::street_ripple_kind, i, repeat, horizon, aspect);
+            const glm::vec2 g =
+                systems::street_source_spot(systems::street_ripple_kind, i, repeat, horizon, aspect);
             const double depth = 0.3 / g.y;
             const double x = g.x * depth / 0.3 / aspect + 0.5, y = horizon - horizon * depth;
             EXPECT_GE(x, 0.0);
