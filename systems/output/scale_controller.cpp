@@ -41,8 +41,16 @@ ScaleUpdate ScaleController::add_frame(double now_s, double frame_s, std::option
 }
 
 void ScaleController::decide(double now_s, ScaleUpdate& update) {
-    // GPU times measure the render alone and show headroom even when the display waits for vblank.
-    const bool gpu = gpu_.count > 0;
+    // GPU times measure the render alone and show headroom even when the display waits for vblank. But
+    // frames that take well over the budget while the GPU time reads under half of them are not waiting
+    // for vblank: the timer misses work (llvmpipe runs a pass's draws after the query has ended), so the
+    // frame times decide.
+    const double budget = 1.0 / tuning_.target_fps;
+    const double frame_typical = frame_.count > 0 ? frame_.percentile(0.5, scratch_) : 0.0;
+    if (gpu_.count > 0 && frame_typical > tuning_.typical_miss * budget &&
+        gpu_.percentile(0.9, scratch_) < 0.5 * frame_typical)
+        timer_misses_work_ = true;  // for good: a timer that reads short would later show false headroom
+    const bool gpu = gpu_.count > 0 && !timer_misses_work_;
     const Samples& samples = gpu ? gpu_ : frame_;
     const double cost = samples.percentile(0.9, scratch_);
     const double typical = samples.percentile(0.5, scratch_);
@@ -52,7 +60,6 @@ void ScaleController::decide(double now_s, ScaleUpdate& update) {
     frame_.clear();
     window_start_.reset();
 
-    const double budget = 1.0 / tuning_.target_fps;
     const double s = scale_;
     double next = s;
     const bool was_probe = std::exchange(probing_, false);

@@ -12,6 +12,10 @@
 // - else, when the cost predicted one step up (p90 * ((s + step) / s)^2) is below fit * budget, the scale
 //   goes up one step. miss > 1 > fit is the hysteresis: a step down lands below the up threshold, a step
 //   up lands below the down threshold, so a steady load never oscillates;
+// - GPU times are the cost where timer queries give them, unless the window's median frame takes over
+//   typical_miss * budget while their p90 reads under half of it: then the timer misses work (llvmpipe
+//   runs a single pass's draws after the query ends) and the frame times are the cost from then on (the
+//   timer would otherwise show headroom as soon as the frames fit, and the scale would go up and down);
 // - frame times only, on a display that waits for vblank, a frame that fits shows as exactly one refresh
 //   period and never shows headroom: after probe_after_s of meeting the target the scale tries a step up;
 //   if the next window misses it goes back down and the wait before the next try doubles (at most
@@ -86,9 +90,10 @@ private:
     std::optional<double> window_start_;
     double last_change_s_ = 0;
     int skip_ = 0;
-    bool unsettled_ = true;  // changes (or the start) not yet reported as settled
-    bool probing_ = false;   // the last change was a try up on frame times
-    double probe_from_ = 0;  // the scale before that try
+    bool unsettled_ = true;           // changes (or the start) not yet reported as settled
+    bool timer_misses_work_ = false;  // GPU times read far under slow frames once: frame times from then on
+    bool probing_ = false;            // the last change was a try up on frame times
+    double probe_from_ = 0;           // the scale before that try
     double probe_after_s_;
     double last_cost_s_ = 0;
     CostSource last_source_ = CostSource::none;

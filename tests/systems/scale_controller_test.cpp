@@ -135,6 +135,31 @@ TEST(ScaleController, AWindowAtTheFloorThatMissesSaysNoScaleHoldsTheTarget) {
     }
 }
 
+// A timer that misses the work (llvmpipe ends the query before it runs a single pass's draws): GPU times
+// of 0.2 ms while frames take twice the budget. The frame times decide, and the scale comes down.
+TEST(ScaleController, GpuTimesFarUnderSlowFramesAreNotTrusted) {
+    ScaleController c(tuning_60());
+    double now = 0;
+    for (int frame = 0; frame < 600; ++frame) {
+        const double cost = slow.at(c.scale());
+        now += cost;
+        c.add_frame(now, cost, 0.0002);
+    }
+    EXPECT_LT(c.scale(), 1.0f);
+    EXPECT_EQ(c.last_source(), CostSource::frame);
+    EXPECT_LE(slow.at(c.scale()), 1.1 * budget_60);
+    // And it stays: the timer's false headroom does not take the scale back up.
+    const float settled = c.scale();
+    int changes = 0;
+    for (int frame = 0; frame < 3000; ++frame) {
+        const double cost = slow.at(c.scale());
+        now += cost;
+        changes += c.add_frame(now, cost, 0.0002).changed ? 1 : 0;
+    }
+    EXPECT_EQ(changes, 0);
+    EXPECT_EQ(c.scale(), settled);
+}
+
 TEST(ScaleController, StepsAreSmall) {
     Sim sim{ScaleController(tuning_60())};
     float previous = sim.controller.scale();
