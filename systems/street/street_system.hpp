@@ -1,12 +1,15 @@
 #pragma once
-// The rainy-street scene (REFERENCE.md section 3), drawn when scene.kind = street: one fullscreen pass in
-// screen space (street.frag). Its rain streaks are the rain overlay, which any scene can have.
+// The rainy-street scene at night (REFERENCE.md section 3), drawn when scene.kind = street: one fullscreen
+// pass in screen space (street.frag): facades, lamps, wet ground and sky. Its rain streaks are the rain
+// overlay (the puddle has them too).
 //
 // Time reaches the shader only through StreetTime, computed here in double (render/shader_phase.hpp),
 // each term modulo the period it repeats at, so the street never jumps and its floats stay small:
 // lightning's two sines modulo 2 pi; the clouds' and the ground's drift as whole noise lattice cells and
-// a fraction; and each ripple and splash source, which repeats at its own period (seeded between 2.5 and
-// 4.5 s, and 1 and 2.5 s), as its repeat number and age.
+// a fraction, and the facades' and lamps' as whole units and a fraction; each ripple and splash source,
+// which repeats at its own period (seeded between 2.5 and 4.5 s, and 1 and 2.5 s), as its repeat number
+// and age, and what the shader draws of it now (its spot, radius and strength); and each lamp's
+// distance, size and fade. What is the same for every pixel is worked out here once a frame.
 
 #include <array>
 #include <cstdint>
