@@ -184,10 +184,13 @@ vec3 lamps(vec2 p, bool reflected, float stretch) {
 // its roof, the sky (at sky_uv) beyond. A ray reflected in the ground is the ray through the mirrored
 // point (X, -Y): it rises as far above the eye's height as the direct one falls below it.
 vec3 city(vec2 p, vec2 sky_uv) {
+    // The pixel's footprint across, taken here in uniform control flow: GLSL ES leaves derivatives
+    // undefined inside a branch that neighbouring pixels may not take.
+    float across = fwidth(p.x);
     float side = p.x < 0.0 ? -1.0 : 1.0;
     float z = FACADE / max(abs(p.x), 1e-4);
     float y = eye_height() + p.y * z;
-    vec4 wall = y > 0.0 ? facade(z, y, side, z * z / FACADE * fwidth(p.x)) : vec4(0.0);
+    vec4 wall = y > 0.0 ? facade(z, y, side, z * z / FACADE * across) : vec4(0.0);
     // The haze: by distance on a facade, and on the open sky by how near the horizon it is (the
     // reference's fog).
     if (wall.a > 0.0) return mix(wall.rgb, u_street_fog_color * 0.7, distance_fog(z));
